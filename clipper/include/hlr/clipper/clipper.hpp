@@ -1,0 +1,124 @@
+// hlr clipper: Weiler–Atherton general polygon clipping, exact on ExactKernel.
+//
+// Clips a subject polygon with holes against a clip polygon with holes and returns the inside
+// list (subject ∩ clip) and the outside list (subject − clip) as regularized polygons with holes:
+// outer contours counter-clockwise, holes clockwise, no zero-area pieces, no zero-length edges.
+// Every output edge names the supporting line it lies on, and every constructed vertex is the
+// intersection of two such lines, which come straight from the input (DESIGN.md, rule 3).
+// Pure 2D: it knows nothing of depth.
+#pragma once
+
+#include <hlr/kernel/kernel.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hlr::clip {
+
+// Index of a supporting line in a LineTable: the provenance of an edge.
+using LineId = std::uint32_t;
+
+// A line given by two input points. Fragment edges lie on such lines, and new vertices are only
+// ever constructed as the intersection of two of them, never of already-constructed segments.
+template <class K>
+struct SupportLine {
+  typename Geometry<K>::Point a, b;
+};
+template <class K>
+using LineTable = std::vector<SupportLine<K>>;
+
+// A closed contour: points[i] -> points[i+1 mod n] lies on line lines[i]. The first point is not
+// repeated at the end.
+template <class K>
+struct Contour {
+  std::vector<typename Geometry<K>::Point> points;
+  std::vector<LineId> lines;
+  std::size_t size() const { return points.size(); }
+};
+
+template <class K>
+struct Polygon {
+  Contour<K> outer;
+  std::vector<Contour<K>> holes;
+};
+
+template <class K>
+struct ClipResult {
+  std::vector<Polygon<K>> inside;   // subject ∩ clip
+  std::vector<Polygon<K>> outside;  // subject − clip
+};
+
+// Thrown when input breaks the clipper's preconditions, or when an inexact kernel has produced
+// an inconsistent arrangement (the exact kernel never does on valid input).
+struct ClipError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Builds a contour from raw points, registering each edge as a new line of `lines`.
+template <class K>
+Contour<K> make_contour(const std::vector<typename Geometry<K>::Point>& points, LineTable<K>& lines);
+
+// Orients a polygon in place (outer counter-clockwise, holes clockwise) and drops repeated
+// consecutive points. Returns a description of the first defect, or nothing if the polygon is a
+// valid polygon with holes: contours with at least 3 points and non-zero area, every contour
+// simple (no edge meets a non-adjacent edge), contours of one polygon do not cross or overlap
+// along an edge, and every hole lies inside the outer contour and outside the other holes.
+// Contours may touch at single points.
+template <class K>
+std::optional<std::string> normalize_polygon(Polygon<K>& polygon);
+
+// The clip polygon, prepared once for clipping many subjects (the area sort's use).
+// Must be normalized and valid. Keeps a reference to `lines`, which must outlive it.
+template <class K>
+class ClipRegion {
+ public:
+  ClipRegion(Polygon<K> polygon, const LineTable<K>& lines);
+  ~ClipRegion();
+  ClipRegion(ClipRegion&&) noexcept;
+  ClipRegion& operator=(ClipRegion&&) noexcept;
+
+  const Polygon<K>& polygon() const;
+  struct Prepared;
+  const Prepared& prepared() const { return *prepared_; }
+
+ private:
+  std::unique_ptr<Prepared> prepared_;
+};
+
+// Clips one normalized, valid subject against the clip region.
+template <class K>
+ClipResult<K> clip_polygon(const Polygon<K>& subject, const ClipRegion<K>& clip);
+
+// Clips each subject of a list against one clip region; result i belongs to subject i.
+template <class K>
+std::vector<ClipResult<K>> clip_list(std::span<const Polygon<K>> subjects, const ClipRegion<K>& clip);
+
+// Exact signed area of a contour (twice the area, to stay in the ring of the coordinates) and of a
+// polygon (outer minus holes). Positive for a counter-clockwise contour.
+template <class K>
+typename Geometry<K>::FT twice_signed_area(const Contour<K>& contour);
+template <class K>
+typename Geometry<K>::FT twice_area(const Polygon<K>& polygon);
+
+// Explicit instantiations live in the clipper library; no translation unit outside it
+// instantiates the algorithm.
+#define HLR_CLIPPER_DECLARE(K, EXTERN)                                                               \
+  EXTERN template Contour<K> make_contour<K>(const std::vector<Geometry<K>::Point>&, LineTable<K>&); \
+  EXTERN template std::optional<std::string> normalize_polygon<K>(Polygon<K>&);                      \
+  EXTERN template class ClipRegion<K>;                                                               \
+  EXTERN template ClipResult<K> clip_polygon<K>(const Polygon<K>&, const ClipRegion<K>&);            \
+  EXTERN template std::vector<ClipResult<K>> clip_list<K>(std::span<const Polygon<K>>,               \
+                                                          const ClipRegion<K>&);                     \
+  EXTERN template Geometry<K>::FT twice_signed_area<K>(const Contour<K>&);                           \
+  EXTERN template Geometry<K>::FT twice_area<K>(const Polygon<K>&);
+
+HLR_CLIPPER_DECLARE(ExactKernel, extern)
+HLR_CLIPPER_DECLARE(EpickKernel, extern)
+HLR_CLIPPER_DECLARE(DoubleKernel, extern)
+
+}  // namespace hlr::clip

@@ -1,0 +1,648 @@
+// The Weiler–Atherton clipper, as a template over the kernel. Included only by the three
+// instantiate_*.cpp files.
+//
+// Weiler and Atherton insert "false vertices" where the two boundaries meet, decide for every
+// stretch of boundary between them whether it runs inside or outside the other polygon, and trace
+// the output contours by turning at each intersection, traversing clip borders once forwards (inside
+// list) and once backwards (outside list). This implementation does the same on an explicit planar
+// graph, which makes every degeneracy an ordinary case:
+//
+//  1. overlay: all boundary edges of subject S and clip C are split at every point where they meet
+//     (crossings, vertices on edges, collinear overlaps); coincident points are merged by exact
+//     comparison, coincident pieces into one graph edge that remembers how many S and C edges run
+//     along it, in which direction, and on which support lines.
+//  2. classify: each graph edge learns on which of its sides S and C lie. Along an S edge the S side
+//     is known from its direction. Elsewhere it comes from the exact angular order of the edges
+//     around a vertex that S's boundary passes through, or, for a stretch that never meets S's
+//     boundary, from one exact point-in-polygon test.
+//  3. select and trace: an edge bounds the inside list where S∩C differs on its two sides, the
+//     outside list where S−C does; it is directed with the result on its left. Cycles are traced
+//     with the face rule (turn to the first edge clockwise) and split at repeated vertices so that
+//     every contour is simple; counter-clockwise cycles are outer contours, clockwise ones holes,
+//     each hole going to the innermost outer contour that contains it.
+//
+// All decisions are predicates of Geometry<K>; the only construction is the intersection of two
+// support lines taken from the input.
+#pragma once
+
+#include <hlr/clipper/clipper.hpp>
+
+#include <algorithm>
+#include <numeric>
+
+namespace hlr::clip {
+namespace detail {
+
+template <class K>
+using Point = typename Geometry<K>::Point;
+
+inline bool boxes_overlap(const CGAL::Bbox_2& a, const CGAL::Bbox_2& b) {
+  return a.xmin() <= b.xmax() && b.xmin() <= a.xmax() && a.ymin() <= b.ymax() && b.ymin() <= a.ymax();
+}
+
+template <class K>
+CGAL::Bbox_2 contour_box(const Contour<K>& c) {
+  CGAL::Bbox_2 box;
+  for (const auto& p : c.points) box += Geometry<K>::bbox(p);
+  return box;
+}
+
+// q is collinear with a, b: is it strictly between them?
+template <class K>
+bool strictly_between(const Point<K>& a, const Point<K>& b, const Point<K>& q) {
+  using G = Geometry<K>;
+  return G::compare_xy(a, q) * G::compare_xy(q, b) > 0;
+}
+
+// +1 when q is inside the contour's bounded region, 0 on its boundary, -1 outside.
+template <class K>
+int side_of_contour(const Contour<K>& contour, const Point<K>& q) {
+  using G = Geometry<K>;
+  const auto& pts = contour.points;
+  const std::size_t n = pts.size();
+  bool inside = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point<K>& a = pts[i];
+    const Point<K>& b = pts[i + 1 == n ? 0 : i + 1];
+    const int ya = G::compare_y(a, q), yb = G::compare_y(b, q);
+    if (ya > 0 && yb > 0) continue;
+    if (ya < 0 && yb < 0) continue;
+    const int o = G::orientation(a, b, q);
+    if (o == 0 && G::compare_xy(a, q) * G::compare_xy(q, b) >= 0) return 0;
+    // Half-open rule: a vertex at q's height counts as below.
+    if ((ya > 0) != (yb > 0)) {
+      if (yb > 0 ? o > 0 : o < 0) inside = !inside;
+    }
+  }
+  return inside ? 1 : -1;
+}
+
+// +1 inside the polygon (inside the outer contour, outside every hole), 0 on its boundary, -1
+// outside.
+template <class K>
+int side_of_polygon(const Polygon<K>& polygon, const Point<K>& q) {
+  int s = side_of_contour(polygon.outer, q);
+  if (s <= 0) return s;
+  for (const auto& hole : polygon.holes) {
+    int h = side_of_contour(hole, q);
+    if (h == 0) return 0;
+    if (h > 0) return -1;
+  }
+  return 1;
+}
+
+template <class K>
+int contour_orientation(const std::vector<Point<K>>& pts) {
+  using G = Geometry<K>;
+  const std::size_t n = pts.size();
+  std::size_t m = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (G::compare_xy(pts[i], pts[m]) < 0) m = i;
+  return G::orientation(pts[(m + n - 1) % n], pts[m], pts[(m + 1) % n]);
+}
+
+template <class K>
+void reverse_contour(Contour<K>& c) {
+  const std::size_t n = c.points.size();
+  std::reverse(c.points.begin(), c.points.end());
+  std::vector<LineId> lines(n);
+  // The edge q[j] -> q[j+1] of the reversed contour is the input edge p[n-2-j] -> p[n-1-j].
+  for (std::size_t j = 0; j < n; ++j) lines[j] = c.lines[(2 * n - 2 - j) % n];
+  c.lines = std::move(lines);
+}
+
+// One boundary edge entering the overlay.
+struct InputEdge {
+  std::uint32_t a, b;  // raw point indices
+  LineId line;
+  std::uint8_t role;  // 0 subject, 1 clip
+  std::uint32_t contour;
+  CGAL::Bbox_2 box;
+};
+
+// Calls visit(i, j) for every pair of edges whose boxes overlap (sweep over x).
+template <class Visit>
+void for_each_overlapping_pair(const std::vector<InputEdge>& edges, std::vector<std::uint32_t>& order,
+                               Visit&& visit) {
+  order.resize(edges.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t i, std::uint32_t j) {
+              const double a = edges[i].box.xmin(), b = edges[j].box.xmin();
+              return a != b ? a < b : i < j;
+            });
+  for (std::size_t s = 0; s < order.size(); ++s) {
+    const InputEdge& e = edges[order[s]];
+    for (std::size_t t = s + 1; t < order.size(); ++t) {
+      const InputEdge& f = edges[order[t]];
+      if (f.box.xmin() > e.box.xmax()) break;
+      if (f.box.ymin() <= e.box.ymax() && e.box.ymin() <= f.box.ymax()) visit(order[s], order[t]);
+    }
+  }
+}
+
+// An undirected edge of the overlay, stored from its lower vertex (lo) to its higher one (hi).
+struct GraphEdge {
+  std::uint32_t lo, hi;
+  std::int32_t net[2];     // per role: edges running lo->hi minus edges running hi->lo
+  bool has[2];             // per role: does any input edge run along it
+  LineId line[2];          // per role: a support line it lies on
+  std::int8_t left[2];     // per role: is the role's polygon on the left of lo->hi (-1 unknown)
+  std::int8_t right[2];
+};
+
+template <class K>
+class Overlay {
+  using G = Geometry<K>;
+  using P = Point<K>;
+
+ public:
+  ClipResult<K> run(const Polygon<K>& subject, const ClipRegion<K>& clip);
+
+ private:
+  void add_polygon(const Polygon<K>& polygon, std::uint8_t role, const CGAL::Bbox_2* filter);
+  void add_contour(const Contour<K>& contour, std::uint8_t role, std::uint32_t contour_id,
+                   const CGAL::Bbox_2* filter);
+  void intersect_edges();
+  void test_pair(std::uint32_t i, std::uint32_t j);
+  void build_graph();
+  void sort_rings();
+  void classify(int role, const Polygon<K>& polygon);
+  std::vector<Polygon<K>> trace(std::uint8_t list_bit);
+
+  int net_out(std::uint32_t he, int role) const {
+    const GraphEdge& e = graph_[he >> 1];
+    return (he & 1) ? -e.net[role] : e.net[role];
+  }
+  std::uint32_t origin(std::uint32_t he) const { return (he & 1) ? graph_[he >> 1].hi : graph_[he >> 1].lo; }
+  std::uint32_t target(std::uint32_t he) const { return (he & 1) ? graph_[he >> 1].lo : graph_[he >> 1].hi; }
+
+  const LineTable<K>* lines_ = nullptr;
+  std::vector<P> raw_;                 // input vertices, then constructed intersections
+  std::vector<InputEdge> edges_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> splits_;  // (edge, raw point) on its interior
+  std::vector<std::uint32_t> order_;
+  std::vector<std::uint32_t> canon_;   // raw point -> vertex
+  std::vector<P> vertices_;
+  struct Piece {
+    std::uint32_t lo, hi;
+    std::int8_t dir;  // +1 when the input edge runs lo->hi
+    std::uint8_t role;
+    LineId line;
+  };
+  std::vector<Piece> pieces_;
+  std::vector<GraphEdge> graph_;
+  std::vector<std::uint32_t> ring_start_, ring_, pos_;  // half-edges around each vertex, CCW
+  std::vector<std::uint8_t> result_;   // per half-edge: bit 0 inside list, bit 1 outside list
+};
+
+template <class K>
+void Overlay<K>::add_contour(const Contour<K>& c, std::uint8_t role, std::uint32_t contour_id,
+                             const CGAL::Bbox_2* filter) {
+  const std::uint32_t base = static_cast<std::uint32_t>(raw_.size());
+  const std::uint32_t n = static_cast<std::uint32_t>(c.points.size());
+  for (const auto& p : c.points) raw_.push_back(p);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = i + 1 == n ? 0 : i + 1;
+    CGAL::Bbox_2 box = G::bbox(c.points[i]) + G::bbox(c.points[j]);
+    // A clip edge that cannot reach the subject's box can neither cut it nor bound a result.
+    if (filter && !boxes_overlap(box, *filter)) continue;
+    edges_.push_back({base + i, base + j, c.lines[i], role, contour_id, box});
+  }
+}
+
+template <class K>
+void Overlay<K>::add_polygon(const Polygon<K>& polygon, std::uint8_t role, const CGAL::Bbox_2* filter) {
+  add_contour(polygon.outer, role, 0, filter);
+  for (std::size_t h = 0; h < polygon.holes.size(); ++h)
+    add_contour(polygon.holes[h], role, static_cast<std::uint32_t>(h + 1), filter);
+}
+
+template <class K>
+void Overlay<K>::test_pair(std::uint32_t i, std::uint32_t j) {
+  const InputEdge& e = edges_[i];
+  const InputEdge& f = edges_[j];
+  // A valid contour is simple: its own edges meet only at shared vertices.
+  if (e.role == f.role && e.contour == f.contour) return;
+  const P& p1 = raw_[e.a];
+  const P& p2 = raw_[e.b];
+  const P& q1 = raw_[f.a];
+  const P& q2 = raw_[f.b];
+  const int o1 = G::orientation(p1, p2, q1);
+  const int o2 = G::orientation(p1, p2, q2);
+  if (o1 * o2 > 0) return;
+  const int o3 = G::orientation(q1, q2, p1);
+  const int o4 = G::orientation(q1, q2, p2);
+  if (o3 * o4 > 0) return;
+  if (o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0) {
+    if (e.role == f.role) throw ClipError("contours of one polygon cross each other");
+    const SupportLine<K>& l1 = (*lines_)[e.line];
+    const SupportLine<K>& l2 = (*lines_)[f.line];
+    const std::uint32_t x = static_cast<std::uint32_t>(raw_.size());
+    raw_.push_back(G::line_intersection(l1.a, l1.b, l2.a, l2.b));
+    splits_.push_back({i, x});
+    splits_.push_back({j, x});
+    return;
+  }
+  // Touching or collinear: every endpoint lying strictly inside the other edge splits it.
+  if (o1 == 0 && strictly_between<K>(p1, p2, q1)) splits_.push_back({i, f.a});
+  if (o2 == 0 && strictly_between<K>(p1, p2, q2)) splits_.push_back({i, f.b});
+  if (o3 == 0 && strictly_between<K>(q1, q2, p1)) splits_.push_back({j, e.a});
+  if (o4 == 0 && strictly_between<K>(q1, q2, p2)) splits_.push_back({j, e.b});
+}
+
+template <class K>
+void Overlay<K>::intersect_edges() {
+  for_each_overlapping_pair(edges_, order_, [&](std::uint32_t i, std::uint32_t j) { test_pair(i, j); });
+}
+
+// Merges coincident points, cuts every edge at its split points and merges coincident pieces.
+template <class K>
+void Overlay<K>::build_graph() {
+  // 1. vertices: raw points up to exact equality.
+  order_.resize(raw_.size());
+  std::iota(order_.begin(), order_.end(), 0u);
+  std::sort(order_.begin(), order_.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return G::compare_xy(raw_[a], raw_[b]) < 0; });
+  canon_.assign(raw_.size(), 0);
+  vertices_.clear();
+  for (std::size_t k = 0; k < order_.size(); ++k) {
+    if (k == 0 || !G::equal(raw_[order_[k]], vertices_.back())) vertices_.push_back(raw_[order_[k]]);
+    canon_[order_[k]] = static_cast<std::uint32_t>(vertices_.size() - 1);
+  }
+  // Vertex ids follow xy order, so comparing ids compares points.
+
+  // 2. pieces: each edge cut at its split points, in order along the edge.
+  std::sort(splits_.begin(), splits_.end());
+  pieces_.clear();
+  std::vector<std::uint32_t> cuts;
+  std::size_t s = 0;
+  for (std::uint32_t i = 0; i < edges_.size(); ++i) {
+    const InputEdge& e = edges_[i];
+    cuts.clear();
+    cuts.push_back(canon_[e.a]);
+    for (; s < splits_.size() && splits_[s].first == i; ++s) cuts.push_back(canon_[splits_[s].second]);
+    cuts.push_back(canon_[e.b]);
+    const bool ascending = cuts.front() < cuts.back();
+    if (ascending) std::sort(cuts.begin(), cuts.end());
+    else std::sort(cuts.begin(), cuts.end(), std::greater<>());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const std::uint32_t u = cuts[k], v = cuts[k + 1];
+      pieces_.push_back({std::min(u, v), std::max(u, v), static_cast<std::int8_t>(u < v ? 1 : -1), e.role, e.line});
+    }
+  }
+
+  // 3. graph edges: coincident pieces merged.
+  std::sort(pieces_.begin(), pieces_.end(),
+            [](const Piece& a, const Piece& b) { return a.lo != b.lo ? a.lo < b.lo : a.hi < b.hi; });
+  graph_.clear();
+  for (const Piece& p : pieces_) {
+    if (graph_.empty() || graph_.back().lo != p.lo || graph_.back().hi != p.hi)
+      graph_.push_back({p.lo, p.hi, {0, 0}, {false, false}, {0, 0}, {-1, -1}, {-1, -1}});
+    GraphEdge& g = graph_.back();
+    if (!g.has[p.role]) g.line[p.role] = p.line;
+    g.has[p.role] = true;
+    g.net[p.role] += p.dir;
+  }
+}
+
+// Sorts the half-edges around every vertex counter-clockwise, starting from the direction +x.
+template <class K>
+void Overlay<K>::sort_rings() {
+  const std::uint32_t nv = static_cast<std::uint32_t>(vertices_.size());
+  ring_start_.assign(nv + 1, 0);
+  for (const GraphEdge& e : graph_) {
+    ++ring_start_[e.lo + 1];
+    ++ring_start_[e.hi + 1];
+  }
+  for (std::uint32_t v = 0; v < nv; ++v) ring_start_[v + 1] += ring_start_[v];
+  ring_.resize(2 * graph_.size());
+  std::vector<std::uint32_t> fill(ring_start_.begin(), ring_start_.end() - 1);
+  for (std::uint32_t he = 0; he < 2 * graph_.size(); ++he) ring_[fill[origin(he)]++] = he;
+
+  pos_.resize(2 * graph_.size());
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    auto first = ring_.begin() + ring_start_[v], last = ring_.begin() + ring_start_[v + 1];
+    if (last - first > 1) {
+      const P& o = vertices_[v];
+      // Upper half-plane: angle in [0, pi). Within a half, by orientation.
+      auto upper = [&](const P& t) {
+        const int cy = G::compare_y(t, o);
+        return cy > 0 || (cy == 0 && G::compare_x(t, o) > 0);
+      };
+      std::sort(first, last, [&](std::uint32_t h1, std::uint32_t h2) {
+        const P& t1 = vertices_[target(h1)];
+        const P& t2 = vertices_[target(h2)];
+        const bool u1 = upper(t1), u2 = upper(t2);
+        if (u1 != u2) return u1;
+        return G::orientation(o, t1, t2) > 0;
+      });
+    }
+    for (std::uint32_t k = ring_start_[v]; k < ring_start_[v + 1]; ++k) pos_[ring_[k]] = k;
+  }
+}
+
+// Union-find over graph edges.
+struct Groups {
+  std::vector<std::uint32_t> parent;
+  void reset(std::size_t n) {
+    parent.resize(n);
+    std::iota(parent.begin(), parent.end(), 0u);
+  }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
+};
+
+// Decides, for every graph edge, whether `polygon` (the one of `role`) lies on its left and right.
+template <class K>
+void Overlay<K>::classify(int role, const Polygon<K>& polygon) {
+  const std::uint32_t nv = static_cast<std::uint32_t>(vertices_.size());
+  // Along the polygon's own boundary the direction says it.
+  for (GraphEdge& e : graph_) {
+    if (e.net[role] == 0) continue;
+    if (e.net[role] > 1 || e.net[role] < -1) throw ClipError("boundary edges of one polygon overlap");
+    e.left[role] = e.net[role] > 0;
+    e.right[role] = e.net[role] < 0;
+  }
+  // Around a vertex on the polygon's boundary, membership changes only across its boundary edges:
+  // the sector counter-clockwise of an outgoing boundary edge is inside.
+  Groups groups;
+  groups.reset(graph_.size());
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    const std::uint32_t first = ring_start_[v], last = ring_start_[v + 1], deg = last - first;
+    bool touched = false;
+    std::uint32_t start = deg;
+    for (std::uint32_t k = 0; k < deg; ++k) {
+      const std::uint32_t he = ring_[first + k];
+      touched |= graph_[he >> 1].has[role];
+      if (start == deg && net_out(he, role) != 0) start = k;
+    }
+    if (!touched) {
+      // Membership is the same all around v: one group.
+      for (std::uint32_t k = 1; k < deg; ++k) groups.join(ring_[first] >> 1, ring_[first + k] >> 1);
+      continue;
+    }
+    // Boundary edges that cancel (a hole touching the outer along an edge) leave the polygon outside.
+    int w = start == deg ? 0 : (net_out(ring_[first + start], role) > 0 ? 1 : 0);
+    if (start == deg) start = 0;
+    for (std::uint32_t j = 1; j < deg; ++j) {
+      const std::uint32_t he = ring_[first + (start + j) % deg];
+      GraphEdge& e = graph_[he >> 1];
+      if (e.net[role] == 0) {
+        e.left[role] = e.right[role] = static_cast<std::int8_t>(w);
+      } else {
+        w += net_out(he, role);
+        if (w < 0 || w > 1) throw ClipError("inconsistent boundary orientation around a vertex");
+      }
+    }
+  }
+  // Edges that never meet the boundary: one group shares one answer.
+  std::vector<std::int8_t> group_value(graph_.size(), -1);
+  for (std::uint32_t k = 0; k < graph_.size(); ++k)
+    if (graph_[k].left[role] >= 0 && graph_[k].net[role] == 0) group_value[groups.find(k)] = graph_[k].left[role];
+  for (std::uint32_t k = 0; k < graph_.size(); ++k) {
+    GraphEdge& e = graph_[k];
+    if (e.left[role] >= 0) continue;
+    std::int8_t& value = group_value[groups.find(k)];
+    if (value < 0) {
+      int side = side_of_polygon(polygon, vertices_[e.lo]);
+      if (side == 0) side = side_of_polygon(polygon, vertices_[e.hi]);
+      if (side == 0) side = side_of_polygon(polygon, G::midpoint(vertices_[e.lo], vertices_[e.hi]));
+      if (side == 0) throw ClipError("cannot place an edge inside or outside the other polygon");
+      value = side > 0;
+    }
+    e.left[role] = e.right[role] = value;
+  }
+}
+
+// Traces the contours of one result list and assembles polygons with holes.
+template <class K>
+std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
+  std::vector<Contour<K>> outers, holes;
+  std::vector<std::int32_t> on_path(vertices_.size(), -1);
+  std::vector<std::uint32_t> path;  // half-edges of the walk so far
+  std::vector<std::uint8_t> used(result_.size(), 0);
+
+  auto emit = [&](std::size_t from) {
+    Contour<K> c;
+    for (std::size_t k = from; k < path.size(); ++k) {
+      const std::uint32_t he = path[k];
+      const GraphEdge& e = graph_[he >> 1];
+      const LineId line = e.has[0] ? e.line[0] : e.line[1];
+      // A vertex where the contour runs on along the same line is no corner.
+      if (!c.lines.empty() && c.lines.back() == line) continue;
+      c.points.push_back(vertices_[origin(he)]);
+      c.lines.push_back(line);
+    }
+    for (std::size_t k = from; k < path.size(); ++k) on_path[origin(path[k])] = -1;
+    path.resize(from);
+    if (c.points.size() > 1 && c.lines.front() == c.lines.back()) {
+      c.points.erase(c.points.begin());
+      c.lines.erase(c.lines.begin());
+    }
+    if (c.points.size() < 3) throw ClipError("traced a degenerate contour");
+    (contour_orientation<K>(c.points) > 0 ? outers : holes).push_back(std::move(c));
+  };
+
+  for (std::uint32_t start = 0; start < result_.size(); ++start) {
+    if (!(result_[start] & bit) || used[start]) continue;
+    std::uint32_t he = start;
+    path.clear();
+    while (true) {
+      used[he] = 1;
+      on_path[origin(he)] = static_cast<std::int32_t>(path.size());
+      path.push_back(he);
+      const std::uint32_t v = target(he);
+      // Face rule: the next edge is the first result edge clockwise from the way back.
+      const std::uint32_t first = ring_start_[v], deg = ring_start_[v + 1] - first;
+      const std::uint32_t back = pos_[he ^ 1] - first;
+      std::uint32_t next = UINT32_MAX;
+      for (std::uint32_t step = 1; step < deg; ++step) {
+        const std::uint32_t cand = ring_[first + (back + deg - step) % deg];
+        if (result_[cand] & bit) {
+          next = cand;
+          break;
+        }
+      }
+      if (next == UINT32_MAX) throw ClipError("result boundary is not closed");
+      // Back at a vertex of the walk: what lies between is a simple cycle of its own.
+      if (on_path[v] >= 0) emit(static_cast<std::size_t>(on_path[v]));
+      if (used[next]) {
+        if (next != start || !path.empty()) throw ClipError("result boundary is inconsistent");
+        break;
+      }
+      he = next;
+    }
+    if (!path.empty()) throw ClipError("result boundary is inconsistent");
+  }
+
+  // Holes go to the innermost outer contour that contains them.
+  std::vector<Polygon<K>> polygons(outers.size());
+  std::vector<CGAL::Bbox_2> boxes(outers.size());
+  for (std::size_t i = 0; i < outers.size(); ++i) {
+    boxes[i] = contour_box(outers[i]);
+    polygons[i].outer = std::move(outers[i]);
+  }
+  std::vector<typename Geometry<K>::FT> areas;
+  if (outers.size() > 1 && !holes.empty()) {
+    areas.reserve(polygons.size());
+    for (const auto& p : polygons) areas.push_back(twice_signed_area(p.outer));
+  }
+  for (Contour<K>& hole : holes) {
+    std::size_t best = SIZE_MAX;
+    if (polygons.size() == 1) {
+      best = 0;
+    } else {
+      const CGAL::Bbox_2 hb = contour_box(hole);
+      for (std::size_t i = 0; i < polygons.size(); ++i) {
+        const CGAL::Bbox_2& ob = boxes[i];
+        if (hb.xmin() < ob.xmin() || hb.xmax() > ob.xmax() || hb.ymin() < ob.ymin() || hb.ymax() > ob.ymax()) continue;
+        int side = 0;
+        for (std::size_t k = 0; k < hole.points.size() && side == 0; ++k)
+          side = side_of_contour(polygons[i].outer, hole.points[k]);
+        if (side == 0) side = side_of_contour(polygons[i].outer, G::midpoint(hole.points[0], hole.points[1]));
+        if (side > 0 && (best == SIZE_MAX || areas[i] < areas[best])) best = i;
+      }
+    }
+    if (best == SIZE_MAX) throw ClipError("a hole of the result lies in no outer contour");
+    polygons[best].holes.push_back(std::move(hole));
+  }
+  return polygons;
+}
+
+template <class K>
+ClipResult<K> Overlay<K>::run(const Polygon<K>& subject, const ClipRegion<K>& clip) {
+  const auto& prepared = clip.prepared();
+  const Polygon<K>& clip_polygon = clip.polygon();
+  lines_ = prepared.lines;
+  ClipResult<K> result;
+
+  const CGAL::Bbox_2 subject_box = contour_box(subject.outer);
+  if (!boxes_overlap(subject_box, prepared.box)) {
+    result.outside.push_back(subject);
+    return result;
+  }
+  raw_.clear();
+  edges_.clear();
+  splits_.clear();
+  add_polygon(subject, 0, nullptr);
+  const std::size_t subject_edges = edges_.size();
+  add_polygon(clip_polygon, 1, &subject_box);
+  if (edges_.size() == subject_edges) {
+    // The clip boundary stays away from the subject: it is wholly inside or wholly outside.
+    const int side = side_of_polygon(clip_polygon, subject.outer.points.front());
+    (side > 0 ? result.inside : result.outside).push_back(subject);
+    return result;
+  }
+
+  intersect_edges();
+  build_graph();
+  sort_rings();
+  classify(0, subject);
+  classify(1, clip_polygon);
+
+  result_.assign(2 * graph_.size(), 0);
+  for (std::uint32_t k = 0; k < graph_.size(); ++k) {
+    const GraphEdge& e = graph_[k];
+    const bool in_l = e.left[0] && e.left[1], in_r = e.right[0] && e.right[1];
+    const bool out_l = e.left[0] && !e.left[1], out_r = e.right[0] && !e.right[1];
+    if (in_l != in_r) result_[in_l ? 2 * k : 2 * k + 1] |= 1;
+    if (out_l != out_r) result_[out_l ? 2 * k : 2 * k + 1] |= 2;
+  }
+  result.inside = trace(1);
+  result.outside = trace(2);
+  return result;
+}
+
+}  // namespace detail
+
+template <class K>
+struct ClipRegion<K>::Prepared {
+  Polygon<K> polygon;
+  const LineTable<K>* lines;
+  CGAL::Bbox_2 box;
+};
+
+template <class K>
+ClipRegion<K>::ClipRegion(Polygon<K> polygon, const LineTable<K>& lines)
+    : prepared_(std::make_unique<Prepared>()) {
+  prepared_->box = detail::contour_box(polygon.outer);
+  prepared_->polygon = std::move(polygon);
+  prepared_->lines = &lines;
+}
+template <class K>
+ClipRegion<K>::~ClipRegion() = default;
+template <class K>
+ClipRegion<K>::ClipRegion(ClipRegion&&) noexcept = default;
+template <class K>
+ClipRegion<K>& ClipRegion<K>::operator=(ClipRegion&&) noexcept = default;
+template <class K>
+const Polygon<K>& ClipRegion<K>::polygon() const {
+  return prepared_->polygon;
+}
+
+template <class K>
+ClipResult<K> clip_polygon(const Polygon<K>& subject, const ClipRegion<K>& clip) {
+  detail::Overlay<K> overlay;
+  return overlay.run(subject, clip);
+}
+
+template <class K>
+std::vector<ClipResult<K>> clip_list(std::span<const Polygon<K>> subjects, const ClipRegion<K>& clip) {
+  detail::Overlay<K> overlay;  // its buffers are reused from subject to subject
+  std::vector<ClipResult<K>> results;
+  results.reserve(subjects.size());
+  for (const Polygon<K>& s : subjects) results.push_back(overlay.run(s, clip));
+  return results;
+}
+
+template <class K>
+Contour<K> make_contour(const std::vector<typename Geometry<K>::Point>& points, LineTable<K>& lines) {
+  Contour<K> c;
+  c.points = points;
+  const std::size_t n = points.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    c.lines.push_back(static_cast<LineId>(lines.size()));
+    lines.push_back({points[i], points[(i + 1) % n]});
+  }
+  return c;
+}
+
+template <class K>
+typename Geometry<K>::FT twice_signed_area(const Contour<K>& contour) {
+  using G = Geometry<K>;
+  const auto& pts = contour.points;
+  const std::size_t n = pts.size();
+  if constexpr (G::exact_constructions) {
+    // Sum in the exact number type: a lazy sum over many terms would build a deep DAG.
+    using ET = typename G::FT::Exact_type;
+    ET sum = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& p = pts[i];
+      const auto& q = pts[(i + 1) % n];
+      sum += CGAL::exact(p.x()) * CGAL::exact(q.y()) - CGAL::exact(q.x()) * CGAL::exact(p.y());
+    }
+    return typename G::FT(sum);
+  } else {
+    typename G::FT sum = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& p = pts[i];
+      const auto& q = pts[(i + 1) % n];
+      sum += G::x(p) * G::y(q) - G::x(q) * G::y(p);
+    }
+    return sum;
+  }
+}
+
+template <class K>
+typename Geometry<K>::FT twice_area(const Polygon<K>& polygon) {
+  auto a = twice_signed_area(polygon.outer);
+  for (const auto& h : polygon.holes) a += twice_signed_area(h);  // holes are clockwise: negative
+  return a;
+}
+
+}  // namespace hlr::clip

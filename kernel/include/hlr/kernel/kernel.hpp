@@ -1,0 +1,147 @@
+// hlr kernel layer: the three number models hlr runs on, behind one small traits interface.
+//
+//   ExactKernel   CGAL Epeck: exact predicates and exact constructions. What users get.
+//   EpickKernel   CGAL Epick: exact predicates, constructions rounded to double.
+//   DoubleKernel  plain double everywhere: the naive baseline for the stability chart.
+//
+// Algorithms are templates over K and reach geometry only through Geometry<K>, so the same code
+// runs on all three. Every robustness decision lives here, not in the algorithms.
+#pragma once
+
+#include <CGAL/Bbox_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <string_view>
+
+namespace hlr {
+
+using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using EpickKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+struct DoublePoint {
+  double x = 0, y = 0;
+};
+struct DoubleKernel {
+  using FT = double;
+  using Point_2 = DoublePoint;
+};
+
+enum class KernelKind { exact, epick, floating };
+
+// "exact" | "epick" | "double"; returns false on an unknown name.
+inline bool parse_kernel_kind(std::string_view name, KernelKind& kind) {
+  if (name == "exact") kind = KernelKind::exact;
+  else if (name == "epick") kind = KernelKind::epick;
+  else if (name == "double") kind = KernelKind::floating;
+  else return false;
+  return true;
+}
+
+inline const char* kernel_name(KernelKind kind) {
+  switch (kind) {
+    case KernelKind::exact: return "exact";
+    case KernelKind::epick: return "epick";
+    case KernelKind::floating: return "double";
+  }
+  return "?";
+}
+
+// An exact number written without rounding: "p/q", or "p" when q = 1.
+inline std::string exact_rational_string(const ExactKernel::FT& v) {
+  using ET = ExactKernel::FT::Exact_type;
+  const ET& e = CGAL::exact(v);
+  typename CGAL::Fraction_traits<ET>::Numerator_type num, den;
+  typename CGAL::Fraction_traits<ET>::Decompose()(e, num, den);
+  std::ostringstream out;
+  out << num;
+  if (den != 1) out << '/' << den;
+  return out.str();
+}
+// A double is a dyadic rational, written as such.
+inline std::string exact_string_of_double(double d) { return exact_rational_string(ExactKernel::FT(d)); }
+
+// Signs are returned as int: -1, 0, +1.
+template <class K>
+struct Geometry;
+
+template <class K>
+struct CgalGeometry {
+  using FT = typename K::FT;
+  using Point = typename K::Point_2;
+  static constexpr bool exact_constructions = std::is_same_v<K, ExactKernel>;
+
+  static Point point(double x, double y) { return Point(x, y); }
+  static int orientation(const Point& a, const Point& b, const Point& c) {
+    return static_cast<int>(CGAL::orientation(a, b, c));
+  }
+  static int compare_x(const Point& a, const Point& b) { return static_cast<int>(CGAL::compare_x(a, b)); }
+  static int compare_y(const Point& a, const Point& b) { return static_cast<int>(CGAL::compare_y(a, b)); }
+  static int compare_xy(const Point& a, const Point& b) { return static_cast<int>(CGAL::compare_xy(a, b)); }
+  static bool equal(const Point& a, const Point& b) { return a == b; }
+
+  // The intersection of the line through a, b with the line through c, d (not parallel).
+  static Point line_intersection(const Point& a, const Point& b, const Point& c, const Point& d) {
+    typename K::Line_2 l1(a, b), l2(c, d);
+    auto result = CGAL::intersection(l1, l2);
+    if (result) {
+      if (const Point* p = boost::get<Point>(&*result)) return *p;
+    }
+    throw std::runtime_error("line_intersection: lines are parallel");
+  }
+  static Point midpoint(const Point& a, const Point& b) { return CGAL::midpoint(a, b); }
+
+  static FT x(const Point& p) { return p.x(); }
+  static FT y(const Point& p) { return p.y(); }
+  static double to_double(const FT& v) { return CGAL::to_double(v); }
+  static CGAL::Bbox_2 bbox(const Point& p) { return p.bbox(); }
+
+  static std::string exact_string(const FT& v) {
+    if constexpr (exact_constructions) return exact_rational_string(v);
+    else return exact_string_of_double(CGAL::to_double(v));
+  }
+};
+
+template <>
+struct Geometry<ExactKernel> : CgalGeometry<ExactKernel> {};
+template <>
+struct Geometry<EpickKernel> : CgalGeometry<EpickKernel> {};
+
+// Plain double: every predicate is the naive formula, with no filter and no fallback.
+template <>
+struct Geometry<DoubleKernel> {
+  using FT = double;
+  using Point = DoublePoint;
+  static constexpr bool exact_constructions = false;
+
+  static Point point(double x, double y) { return {x, y}; }
+  static int sign(double v) { return (v > 0) - (v < 0); }
+  static int orientation(const Point& a, const Point& b, const Point& c) {
+    return sign((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  }
+  static int compare_x(const Point& a, const Point& b) { return sign(a.x - b.x); }
+  static int compare_y(const Point& a, const Point& b) { return sign(a.y - b.y); }
+  static int compare_xy(const Point& a, const Point& b) {
+    int c = compare_x(a, b);
+    return c != 0 ? c : compare_y(a, b);
+  }
+  static bool equal(const Point& a, const Point& b) { return a.x == b.x && a.y == b.y; }
+  static Point line_intersection(const Point& a, const Point& b, const Point& c, const Point& d) {
+    double rx = b.x - a.x, ry = b.y - a.y, sx = d.x - c.x, sy = d.y - c.y;
+    double den = rx * sy - ry * sx;
+    if (den == 0) throw std::runtime_error("line_intersection: lines are parallel");
+    double t = ((c.x - a.x) * sy - (c.y - a.y) * sx) / den;
+    return {a.x + t * rx, a.y + t * ry};
+  }
+  static Point midpoint(const Point& a, const Point& b) { return {(a.x + b.x) / 2, (a.y + b.y) / 2}; }
+  static double x(const Point& p) { return p.x; }
+  static double y(const Point& p) { return p.y; }
+  static double to_double(double v) { return v; }
+  static CGAL::Bbox_2 bbox(const Point& p) { return {p.x, p.y, p.x, p.y}; }
+  static std::string exact_string(double v) { return exact_string_of_double(v); }
+};
+
+}  // namespace hlr

@@ -1,0 +1,57 @@
+// The traits interface answers the same on every kernel where the answer is representable, and
+// the exact kernel keeps what double rounds away.
+#include <hlr/kernel/kernel.hpp>
+
+#include <gtest/gtest.h>
+
+namespace hlr {
+namespace {
+
+template <class K>
+class GeometryTest : public ::testing::Test {};
+using Kernels = ::testing::Types<ExactKernel, EpickKernel, DoubleKernel>;
+TYPED_TEST_SUITE(GeometryTest, Kernels);
+
+TYPED_TEST(GeometryTest, PredicatesOnRepresentableInput) {
+  using G = Geometry<TypeParam>;
+  auto a = G::point(0, 0), b = G::point(2, 0), c = G::point(1, 1), d = G::point(1, -1);
+  EXPECT_EQ(G::orientation(a, b, c), 1);
+  EXPECT_EQ(G::orientation(a, b, d), -1);
+  EXPECT_EQ(G::orientation(a, b, G::point(5, 0)), 0);
+  EXPECT_EQ(G::compare_xy(a, b), -1);
+  EXPECT_EQ(G::compare_xy(G::point(1, 2), G::point(1, 1)), 1);
+  EXPECT_TRUE(G::equal(G::point(1, 1), c));
+  auto x = G::line_intersection(a, G::point(2, 2), G::point(0, 2), b);
+  EXPECT_TRUE(G::equal(x, G::point(1, 1)));
+  EXPECT_THROW(G::line_intersection(a, b, c, G::point(2, 1)), std::runtime_error);
+}
+
+TEST(ExactKernel, IntersectionsAreExactRationals) {
+  using G = Geometry<ExactKernel>;
+  // Lines y = x / 3 and x = 1 meet at (1, 1/3), which no double holds.
+  auto p = G::line_intersection(G::point(0, 0), G::point(3, 1), G::point(1, -5), G::point(1, 5));
+  EXPECT_EQ(G::exact_string(G::x(p)), "1");
+  EXPECT_EQ(G::exact_string(G::y(p)), "1/3");
+  // The point lies exactly on the line it came from.
+  EXPECT_EQ(G::orientation(G::point(0, 0), G::point(3, 1), p), 0);
+}
+
+TEST(DoubleKernel, RoundsWhereExactDoesNot) {
+  using D = Geometry<DoubleKernel>;
+  auto p = D::line_intersection(D::point(0, 0), D::point(3, 1), D::point(1, -5), D::point(1, 5));
+  // 1/3 rounded: the double kernel's point is off the line (or on it only by luck of rounding).
+  EXPECT_EQ(D::exact_string(D::y(p)), "6004799503160661/18014398509481984");
+}
+
+TEST(Kernel, NamesRoundTrip) {
+  for (auto kind : {KernelKind::exact, KernelKind::epick, KernelKind::floating}) {
+    KernelKind parsed;
+    ASSERT_TRUE(parse_kernel_kind(kernel_name(kind), parsed));
+    EXPECT_EQ(parsed, kind);
+  }
+  KernelKind k;
+  EXPECT_FALSE(parse_kernel_kind("float", k));
+}
+
+}  // namespace
+}  // namespace hlr

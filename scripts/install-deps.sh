@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian packages hlr needs to build, test and benchmark. Idempotent, non-interactive:
+# only packages that are missing are installed, so a second run does nothing and needs no network.
+set -euo pipefail
+
+packages=(
+  # build
+  build-essential cmake ninja-build ccache pkg-config
+  # libraries (DESIGN.md "Dependencies")
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libopenmesh-dev libglm-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
+  # peer in the clipper benchmark (Clipper 1, integer coordinates)
+  libpolyclipping-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

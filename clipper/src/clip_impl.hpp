@@ -158,6 +158,7 @@ class Overlay {
 
  public:
   ClipResult<K> run(const Polygon<K>& subject, const ClipRegion<K>& clip);
+  std::vector<Polygon<K>> merge(std::span<const Contour<K>> pieces, const LineTable<K>& lines);
 
  private:
   void add_polygon(const Polygon<K>& polygon, std::uint8_t role, const CGAL::Bbox_2* filter);
@@ -374,11 +375,12 @@ void Overlay<K>::classify(int role, const Polygon<K>& polygon) {
   groups.reset(graph_.size());
   for (std::uint32_t v = 0; v < nv; ++v) {
     const std::uint32_t first = ring_start_[v], last = ring_start_[v + 1], deg = last - first;
-    bool touched = false;
+    bool touched = false, needed = false;
     std::uint32_t start = deg;
     for (std::uint32_t k = 0; k < deg; ++k) {
       const std::uint32_t he = ring_[first + k];
       touched |= graph_[he >> 1].has[role];
+      needed |= graph_[he >> 1].net[role] == 0;
       if (start == deg && net_out(he, role) != 0) start = k;
     }
     if (!touched) {
@@ -386,6 +388,9 @@ void Overlay<K>::classify(int role, const Polygon<K>& polygon) {
       for (std::uint32_t k = 1; k < deg; ++k) groups.join(ring_[first] >> 1, ring_[first + k] >> 1);
       continue;
     }
+    // Only edges off the boundary need the walk. Where there are none, v may lie outside the
+    // subject's box, where clip edges were left out and the ring is incomplete.
+    if (!needed) continue;
     // Boundary edges that cancel (a hole touching the outer along an edge) leave the polygon outside.
     int w = start == deg ? 0 : (net_out(ring_[first + start], role) > 0 ? 1 : 0);
     if (start == deg) start = 0;
@@ -558,7 +563,33 @@ ClipResult<K> Overlay<K>::run(const Polygon<K>& subject, const ClipRegion<K>& cl
   return result;
 }
 
+// The union of a tessellation: an edge bounds it where the pieces along it do not cancel out.
+template <class K>
+std::vector<Polygon<K>> Overlay<K>::merge(std::span<const Contour<K>> pieces, const LineTable<K>& lines) {
+  lines_ = &lines;
+  raw_.clear();
+  edges_.clear();
+  splits_.clear();
+  for (std::size_t i = 0; i < pieces.size(); ++i) add_contour(pieces[i], 0, static_cast<std::uint32_t>(i), nullptr);
+  intersect_edges();
+  build_graph();
+  sort_rings();
+  result_.assign(2 * graph_.size(), 0);
+  for (std::uint32_t k = 0; k < graph_.size(); ++k) {
+    const int net = graph_[k].net[0];
+    if (net > 1 || net < -1) throw ClipError("pieces of a tessellation overlap");
+    if (net != 0) result_[net > 0 ? 2 * k : 2 * k + 1] = 1;
+  }
+  return trace(1);
+}
+
 }  // namespace detail
+
+template <class K>
+std::vector<Polygon<K>> merge_polygons(std::span<const Contour<K>> pieces, const LineTable<K>& lines) {
+  detail::Overlay<K> overlay;
+  return overlay.merge(pieces, lines);
+}
 
 template <class K>
 struct ClipRegion<K>::Prepared {

@@ -304,3 +304,64 @@ TEST(ClipNormalize, ReorientsAndKeepsProvenance) {
 
 }  // namespace
 }  // namespace hlr::clip
+
+namespace hlr::clip {
+namespace {
+
+std::vector<Polygon<K>> merged(const std::vector<Coords>& faces, LineTable<K>& lines) {
+  std::vector<Contour<K>> pieces;
+  for (const auto& f : faces) {
+    std::vector<Pt> pts;
+    for (auto [x, y] : f) pts.push_back(G::point(x, y));
+    pieces.push_back(make_contour<K>(pts, lines));
+  }
+  return merge_polygons<K>(pieces, lines);
+}
+
+TEST(MergePolygons, TessellatedSquareBecomesOnePolygon) {
+  LineTable<K> lines;
+  auto polys = merged({{{0, 0}, {2, 0}, {2, 2}}, {{0, 0}, {2, 2}, {0, 2}}}, lines);
+  EXPECT_EQ(canonical(polys), canonical(std::vector<Shape>{rect(0, 0, 2, 2)}));
+}
+
+TEST(MergePolygons, RingOfQuadsHasAHoleAndTJunctionsAreSplit) {
+  LineTable<K> lines;
+  // A ring around (1,1)-(2,2); the bottom quad spans the whole width, so its top edge carries
+  // T-junctions at x = 1 and x = 2.
+  auto polys = merged({{{0, 0}, {3, 0}, {3, 1}, {0, 1}},
+                       {{0, 1}, {1, 1}, {1, 3}, {0, 3}},
+                       {{2, 1}, {3, 1}, {3, 3}, {2, 3}},
+                       {{1, 2}, {2, 2}, {2, 3}, {1, 3}}},
+                      lines);
+  EXPECT_EQ(canonical(polys), canonical(std::vector<Shape>{{rect(0, 0, 3, 3).outer, {rect_hole(1, 1, 2, 2)}}}));
+}
+
+TEST(MergePolygons, OverlappingPiecesAreRefused) {
+  LineTable<K> lines;
+  EXPECT_THROW(merged({rect(0, 0, 2, 2).outer, rect(1, 1, 3, 3).outer}, lines), ClipError);
+}
+
+}  // namespace
+}  // namespace hlr::clip
+
+namespace hlr::clip {
+namespace {
+
+TEST(ClipDegeneracies, ClipHoleTouchingOuterAwayFromSubject) {
+  // The clip's hole touches its outer contour at (5, 5), outside the subject's box, where one of
+  // the outer edges through (5, 5) reaches the subject's box and the other does not (found on
+  // anchor.off in the iso view).
+  Shape clip{{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 8}, {5, 5}, {9, 1}, {0, 1}}, {{{5, 5}, {6, 8}, {8, 6}}}};
+  LineTable<K> lines;
+  Polygon<K> s = make(lines, {{{6, 2}, {9, 2}, {6, 7}}});
+  Polygon<K> c = make(lines, clip);
+  ClipRegion<K> region(c, lines);
+  ClipResult<K> r = clip_polygon(s, region);
+  check_invariants(s, r, lines);
+  // Inside: the subject above the line x + y = 10, less the hole's part; outside: the rest.
+  EXPECT_EQ(r.inside.size(), 1u);
+  EXPECT_EQ(r.outside.size(), 2u);
+}
+
+}  // namespace
+}  // namespace hlr::clip

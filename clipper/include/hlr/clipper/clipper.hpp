@@ -98,6 +98,12 @@ ClipResult<K> clip_polygon(const Polygon<K>& subject, const ClipRegion<K>& clip)
 template <class K>
 std::vector<ClipResult<K>> clip_list(std::span<const Polygon<K>> subjects, const ClipRegion<K>& clip);
 
+// The union of counter-clockwise contours whose interiors do not overlap (a tessellation, such as
+// the faces of one planar region), as polygons with holes; shared edges vanish. Throws ClipError
+// when pieces overlap.
+template <class K>
+std::vector<Polygon<K>> merge_polygons(std::span<const Contour<K>> pieces, const LineTable<K>& lines);
+
 // Exact signed area of a contour (twice the area, to stay in the ring of the coordinates) and of a
 // polygon (outer minus holes). Positive for a counter-clockwise contour.
 template <class K>
@@ -114,6 +120,7 @@ typename Geometry<K>::FT twice_area(const Polygon<K>& polygon);
   EXTERN template ClipResult<K> clip_polygon<K>(const Polygon<K>&, const ClipRegion<K>&);            \
   EXTERN template std::vector<ClipResult<K>> clip_list<K>(std::span<const Polygon<K>>,               \
                                                           const ClipRegion<K>&);                     \
+  EXTERN template std::vector<Polygon<K>> merge_polygons<K>(std::span<const Contour<K>>, const LineTable<K>&); \
   EXTERN template Geometry<K>::FT twice_signed_area<K>(const Contour<K>&);                           \
   EXTERN template Geometry<K>::FT twice_area<K>(const Polygon<K>&);
 

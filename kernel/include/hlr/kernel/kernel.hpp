@@ -75,6 +75,8 @@ struct CgalGeometry {
   static constexpr bool exact_constructions = std::is_same_v<K, ExactKernel>;
 
   static Point point(double x, double y) { return Point(x, y); }
+  static Point point(const FT& x, const FT& y) requires(!std::is_same_v<FT, double>) { return Point(x, y); }
+  static int sign(const FT& v) { return static_cast<int>(CGAL::sign(v)); }
   static int orientation(const Point& a, const Point& b, const Point& c) {
     return static_cast<int>(CGAL::orientation(a, b, c));
   }

@@ -1,0 +1,111 @@
+// hlr hidden_line: the hidden-surface solution of one view (Weiler–Atherton's area sort).
+//
+// build_sources turns the meshes of a scene into the polygons the area sort works on: faces are
+// projected exactly (ViewFrame), back faces of closed, consistently oriented components are
+// removed, faces seen edge-on are dropped (they cover no area), and connected, exactly coplanar
+// faces are consolidated into one polygon with holes, so a tessellated planar face is one polygon.
+//
+// area_sort solves visibility: the nearest polygon clips the rest into inside and outside lists
+// (clip_list); inside pieces behind it are hidden by it; a piece in front of it means the rough
+// depth order was wrong there and the region is solved recursively with that piece in front; a
+// piece that is partly in front and partly behind (penetration) is split exactly along the line
+// where the two planes meet. The result, a VisibilityMap, gives every source's visible pieces and
+// its hidden pieces, each hidden piece tagged with the source that hides it.
+//
+// Depth is decided exactly from each source's plane (DESIGN.md rule 4). Where two sources lie in
+// the same plane over an area, the one with the lower index wins (sources are ordered by mesh,
+// then by first face), and the count of such areas is in the stats.
+#pragma once
+
+#include <hlr/clipper/clipper.hpp>
+#include <hlr/kernel/scene.hpp>
+#include <hlr/kernel/view.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace hlr::hidden_line {
+
+// z = a x + b y + c in view coordinates (unnormalized frame).
+template <class K>
+struct DepthPlane {
+  typename Geometry<K>::FT a, b, c;
+};
+
+// What a support line is.
+struct LineOrigin {
+  enum Kind { mesh_edge, intersection, auxiliary } kind = auxiliary;
+  std::int32_t mesh = -1;                     // mesh_edge: the mesh and the edge's vertex indices,
+  std::uint32_t v0 = 0, v1 = 0;               // v0 < v1
+  std::int32_t source_a = -1, source_b = -1;  // intersection: the two sources whose planes meet
+};
+
+// One polygon of the area sort: consolidated faces of one mesh, in one plane.
+template <class K>
+struct SourcePolygon {
+  clip::Polygon<K> polygon;  // projected, outer counter-clockwise
+  DepthPlane<K> plane;
+  std::uint32_t mesh = 0;
+  std::vector<std::uint32_t> faces;  // indices into the mesh's face list
+};
+
+struct SourceStats {
+  std::size_t faces = 0;
+  std::size_t back_faces_removed = 0;
+  std::size_t edge_on_faces_removed = 0;
+  std::size_t faces_consolidated = 0;  // faces merged into a polygon with other faces
+  std::size_t non_simple_faces_skipped = 0;  // polygon faces whose projection is not simple
+  std::size_t sources = 0;
+  std::size_t closed_components = 0, open_components = 0;
+};
+
+template <class K>
+struct Sources {
+  std::vector<SourcePolygon<K>> polygons;
+  clip::LineTable<K> lines;
+  std::vector<LineOrigin> line_origins;  // parallel to lines
+  SourceStats stats;
+};
+
+struct SourceOptions {
+  bool remove_back_faces = true;
+  bool consolidate = true;
+};
+
+template <class K>
+Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const SourceOptions& options = {});
+
+template <class K>
+struct Fragment {
+  clip::Polygon<K> polygon;
+  std::uint32_t source = 0;
+  std::int32_t occluder = -1;  // hidden fragments: the source strictly nearer over all of it
+};
+
+struct AreaSortStats {
+  std::size_t clips = 0;             // clip_list calls
+  std::size_t recursions = 0;        // sort errors resolved by recursion
+  std::size_t penetration_splits = 0;
+  std::size_t coplanar_ties = 0;     // areas where two sources coincide in space
+};
+
+template <class K>
+struct VisibilityMap {
+  std::vector<Fragment<K>> visible;
+  std::vector<Fragment<K>> hidden;
+  AreaSortStats stats;
+};
+
+// Solves visibility for the sources; appends the lines of penetration splits to sources.lines.
+template <class K>
+VisibilityMap<K> area_sort(Sources<K>& sources);
+
+#define HLR_HIDDEN_LINE_DECLARE(K, EXTERN)                                                                 \
+  EXTERN template Sources<K> build_sources<K>(const std::vector<Mesh>&, const ViewFrame<K>&, const SourceOptions&); \
+  EXTERN template VisibilityMap<K> area_sort<K>(Sources<K>&);
+
+HLR_HIDDEN_LINE_DECLARE(ExactKernel, extern)
+HLR_HIDDEN_LINE_DECLARE(EpickKernel, extern)
+HLR_HIDDEN_LINE_DECLARE(DoubleKernel, extern)
+
+}  // namespace hlr::hidden_line

@@ -1,0 +1,262 @@
+// area_sort as a template over the kernel; included only by the instantiate_*.cpp files.
+//
+// Weiler and Atherton clip by a copy of the front polygon's original outline and need a stack of
+// clip polygons to stop on cyclic overlap. Here the clip polygon is the front piece itself, so
+// every comparison is between two pieces that really overlap, depth is a strict pointwise order
+// inside every recursion (penetrations having been split), and recursion cannot cycle.
+#pragma once
+
+#include <hlr/hidden_line/visibility.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace hlr::hidden_line {
+namespace detail {
+
+template <class K>
+class AreaSort {
+  using G = Geometry<K>;
+  using FT = typename G::FT;
+  using P = typename G::Point;
+  using Polygon = clip::Polygon<K>;
+
+  struct Item {
+    Polygon polygon;
+    std::uint32_t source;
+    CGAL::Bbox_2 box;
+  };
+  enum class Relation { behind, ahead, coplanar, mixed };
+
+ public:
+  explicit AreaSort(Sources<K>& sources) : src_(sources) {
+    // Rough depth order: the nearest corner of each source, in double (only a heuristic).
+    nearest_.resize(src_.polygons.size());
+    for (std::size_t s = 0; s < src_.polygons.size(); ++s) {
+      const auto& sp = src_.polygons[s];
+      const double a = CGAL::to_double(sp.plane.a), b = CGAL::to_double(sp.plane.b), c = CGAL::to_double(sp.plane.c);
+      double z = -HUGE_VAL;
+      for (const P& p : sp.polygon.outer.points)
+        z = std::max(z, a * CGAL::to_double(G::x(p)) + b * CGAL::to_double(G::y(p)) + c);
+      nearest_[s] = z;
+    }
+  }
+
+  VisibilityMap<K> run() {
+    std::vector<Item> list;
+    list.reserve(src_.polygons.size());
+    for (std::uint32_t s = 0; s < src_.polygons.size(); ++s)
+      list.push_back({src_.polygons[s].polygon, s, box_of(src_.polygons[s].polygon)});
+    resolve(list, SIZE_MAX);
+    return std::move(map_);
+  }
+
+ private:
+  static CGAL::Bbox_2 box_of(const Polygon& p) {
+    CGAL::Bbox_2 box;
+    for (const P& q : p.outer.points) box += G::bbox(q);
+    return box;
+  }
+
+  // Nearer first; ties by source index, so the order is deterministic.
+  bool nearer(const Item& x, const Item& y) const {
+    const double zx = nearest_[x.source], zy = nearest_[y.source];
+    return zx != zy ? zx > zy : x.source < y.source;
+  }
+
+  // Where piece (of source s) lies relative to the plane of source f, over all of the piece.
+  Relation relation(const Polygon& piece, std::uint32_t s, std::uint32_t f) const {
+    const auto& ps = src_.polygons[s].plane;
+    const auto& pf = src_.polygons[f].plane;
+    const FT da = ps.a - pf.a, db = ps.b - pf.b, dc = ps.c - pf.c;
+    bool nearer_somewhere = false, farther_somewhere = false;
+    // The depth difference is linear: its extremes are at corners of the outer contour.
+    for (const P& p : piece.outer.points) {
+      const int sign = G::sign(da * G::x(p) + db * G::y(p) + dc);
+      nearer_somewhere |= sign > 0;
+      farther_somewhere |= sign < 0;
+    }
+    if (nearer_somewhere && farther_somewhere) return Relation::mixed;
+    if (nearer_somewhere) return Relation::ahead;
+    if (farther_somewhere) return Relation::behind;
+    return Relation::coplanar;
+  }
+
+  clip::LineId add_line(const P& a, const P& b, LineOrigin origin) {
+    src_.lines.push_back({a, b});
+    src_.line_origins.push_back(origin);
+    return static_cast<clip::LineId>(src_.lines.size() - 1);
+  }
+
+  // Splits a piece of source s along the line where its plane meets the plane of f: returns the
+  // part nearer than f and the part farther. The cut is an exact half-plane clip whose only edge
+  // that can reach the piece lies on that line.
+  std::pair<std::vector<Polygon>, std::vector<Polygon>> split(const Polygon& piece, std::uint32_t s, std::uint32_t f) {
+    ++map_.stats.penetration_splits;
+    const auto& ps = src_.polygons[s].plane;
+    const auto& pf = src_.polygons[f].plane;
+    const FT da = ps.a - pf.a, db = ps.b - pf.b, dc = ps.c - pf.c;  // nearer where da x + db y + dc > 0
+    const CGAL::Bbox_2 box = box_of(piece);
+    auto widen = [](double v, double dir) { return v + dir * (1 + 1e-6 * std::abs(v)); };
+    LineOrigin cut;
+    cut.kind = LineOrigin::intersection;
+    cut.source_a = static_cast<std::int32_t>(std::min(s, f));
+    cut.source_b = static_cast<std::int32_t>(std::max(s, f));
+    const LineOrigin aux;
+    std::vector<P> corners;
+    const bool by_x = G::sign(db) != 0 &&
+                      (G::sign(da) == 0 || std::abs(CGAL::to_double(db)) >= std::abs(CGAL::to_double(da)));
+    if (by_x) {
+      // The line crosses the verticals x = x0 and x = x1 at y = -(da x + dc) / db.
+      const double x0 = widen(box.xmin(), -1), x1 = widen(box.xmax(), 1);
+      const FT y0 = -(da * FT(x0) + dc) / db, y1 = -(da * FT(x1) + dc) / db;
+      const P l0 = G::point(FT(x0), y0), l1 = G::point(FT(x1), y1);
+      const double lo = widen(std::min({box.ymin(), CGAL::to_double(y0), CGAL::to_double(y1)}), -1);
+      const double hi = widen(std::max({box.ymax(), CGAL::to_double(y0), CGAL::to_double(y1)}), 1);
+      if (G::sign(db) > 0) corners = {l0, l1, G::point(x1, hi), G::point(x0, hi)};  // nearer above
+      else corners = {l0, G::point(x0, lo), G::point(x1, lo), l1};                   // nearer below
+    } else {
+      // The line crosses the horizontals y = y0 and y = y1 at x = -(db y + dc) / da.
+      const double y0 = widen(box.ymin(), -1), y1 = widen(box.ymax(), 1);
+      const FT x0 = -(db * FT(y0) + dc) / da, x1 = -(db * FT(y1) + dc) / da;
+      const P l0 = G::point(x0, FT(y0)), l1 = G::point(x1, FT(y1));
+      const double lo = widen(std::min({box.xmin(), CGAL::to_double(x0), CGAL::to_double(x1)}), -1);
+      const double hi = widen(std::max({box.xmax(), CGAL::to_double(x0), CGAL::to_double(x1)}), 1);
+      if (G::sign(da) > 0) corners = {l0, G::point(hi, y0), G::point(hi, y1), l1};  // nearer right
+      else corners = {l0, l1, G::point(lo, y1), G::point(lo, y0)};                   // nearer left
+    }
+    // The edge from l0 to l1 (or l1 to l0) lies on the cut; the others stay clear of the piece.
+    clip::Contour<K> half;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const P& a = corners[i];
+      const P& b = corners[(i + 1) % corners.size()];
+      const bool on_cut = (i == 0 && by_x && G::sign(db) > 0) || (i == 3 && by_x && G::sign(db) < 0) ||
+                          (i == 3 && !by_x && G::sign(da) > 0) || (i == 0 && !by_x && G::sign(da) < 0);
+      half.points.push_back(a);
+      half.lines.push_back(add_line(a, b, on_cut ? cut : aux));
+    }
+    clip::Polygon<K> half_plane{std::move(half), {}};
+    if (G::sign(clip::twice_signed_area(half_plane.outer)) <= 0)
+      throw clip::ClipError("penetration cut is not a proper half-plane");
+    clip::ClipRegion<K> region(std::move(half_plane), src_.lines);
+    auto parts = clip::clip_polygon(piece, region);
+    return {std::move(parts.inside), std::move(parts.outside)};
+  }
+
+  // Places one inside piece of source s, found within the front piece of source f.
+  void place(Polygon piece, std::uint32_t s, std::uint32_t f, std::vector<Item>& ahead) {
+    // Pieces of one source never overlap; only an inconsistent inexact kernel gets here.
+    if (s == f) throw clip::ClipError("a source overlaps itself");
+    Relation r = relation(piece, s, f);
+    if (r == Relation::coplanar) {
+      ++map_.stats.coplanar_ties;
+      r = s < f ? Relation::ahead : Relation::behind;  // the lower source wins a tie
+    }
+    if (r == Relation::behind) {
+      map_.hidden.push_back({std::move(piece), s, static_cast<std::int32_t>(f)});
+    } else if (r == Relation::ahead) {
+      CGAL::Bbox_2 box = box_of(piece);
+      ahead.push_back({std::move(piece), s, box});
+    } else {
+      auto [nearer, farther] = split(piece, s, f);
+      for (auto& part : nearer) {
+        if (relation(part, s, f) != Relation::ahead) throw clip::ClipError("penetration split left a mixed piece");
+        CGAL::Bbox_2 box = box_of(part);
+        ahead.push_back({std::move(part), s, box});
+      }
+      for (auto& part : farther) {
+        if (relation(part, s, f) != Relation::behind) throw clip::ClipError("penetration split left a mixed piece");
+        map_.hidden.push_back({std::move(part), s, static_cast<std::int32_t>(f)});
+      }
+    }
+  }
+
+  // Solves visibility within `list`. `forced`, if given, is the item that must go first: it lies
+  // in front of the piece whose region the list covers.
+  void resolve(std::vector<Item>& list, std::size_t forced) {
+    // Each level's front lies strictly nearer than its parent's over its whole region, so the depth
+    // is bounded by the number of sources; deeper means the kernel decided inconsistently.
+    if (++depth_ > src_.polygons.size() + 1) throw clip::ClipError("area sort recursion does not converge");
+    // Kept farthest first, so the front item is at the back of the vector.
+    std::optional<Item> first;
+    if (forced != SIZE_MAX) {
+      first = std::move(list[forced]);
+      list.erase(list.begin() + static_cast<std::ptrdiff_t>(forced));
+    }
+    std::stable_sort(list.begin(), list.end(), [&](const Item& x, const Item& y) { return nearer(y, x); });
+
+    std::vector<Item> rest, ahead;
+    std::vector<Polygon> subjects;
+    std::vector<std::size_t> subject_items;
+    while (first || !list.empty()) {
+      Item front;
+      if (first) {
+        front = std::move(*first);
+        first.reset();
+      } else {
+        front = std::move(list.back());
+        list.pop_back();
+      }
+      // Only items whose boxes overlap the front piece can be cut by it.
+      subjects.clear();
+      subject_items.clear();
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        if (CGAL::do_overlap(list[i].box, front.box)) {
+          subject_items.push_back(i);
+          subjects.push_back(std::move(list[i].polygon));
+        }
+      }
+      ahead.clear();
+      if (!subjects.empty()) {
+        ++map_.stats.clips;
+        clip::ClipRegion<K> region(front.polygon, src_.lines);
+        auto results = clip::clip_list<K>(subjects, region);
+        rest.clear();
+        std::size_t next = 0;
+        for (std::size_t i = 0; i < list.size(); ++i) {
+          if (next < subject_items.size() && subject_items[next] == i) {
+            auto& result = results[next++];
+            for (auto& piece : result.outside) {
+              CGAL::Bbox_2 box = box_of(piece);
+              rest.push_back({std::move(piece), list[i].source, box});
+            }
+            for (auto& piece : result.inside) place(std::move(piece), list[i].source, front.source, ahead);
+          } else {
+            rest.push_back(std::move(list[i]));
+          }
+        }
+        list.swap(rest);
+      }
+      if (ahead.empty()) {
+        map_.visible.push_back({std::move(front.polygon), front.source, -1});
+        continue;
+      }
+      // The rough order was wrong here: solve the front piece's region with the nearest of what
+      // lies ahead of it in front.
+      ++map_.stats.recursions;
+      std::size_t lead = 0;
+      for (std::size_t i = 1; i < ahead.size(); ++i)
+        if (nearer(ahead[i], ahead[lead])) lead = i;
+      std::vector<Item> sub = std::move(ahead);
+      ahead = {};
+      sub.push_back(std::move(front));
+      resolve(sub, lead);
+    }
+    --depth_;
+  }
+
+  Sources<K>& src_;
+  std::vector<double> nearest_;
+  std::size_t depth_ = 0;
+  VisibilityMap<K> map_;
+};
+
+}  // namespace detail
+
+template <class K>
+VisibilityMap<K> area_sort(Sources<K>& sources) {
+  return detail::AreaSort<K>(sources).run();
+}
+
+}  // namespace hlr::hidden_line

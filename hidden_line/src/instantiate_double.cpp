@@ -1,0 +1,7 @@
+// The hidden-surface solution instantiated for DoubleKernel.
+#include "area_sort_impl.hpp"
+#include "sources_impl.hpp"
+
+namespace hlr::hidden_line {
+HLR_HIDDEN_LINE_DECLARE(hlr::DoubleKernel, )
+}  // namespace hlr::hidden_line

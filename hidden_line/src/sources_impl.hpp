@@ -1,0 +1,270 @@
+// build_sources as a template over the kernel; included only by the instantiate_*.cpp files.
+//
+// Which faces are coplanar, and which components are closed and consistently oriented, are facts
+// of the model, decided once in model space with exact predicates (CGAL Epeck on the input
+// doubles), whatever the kernel; so the same faces are consolidated in every view. Facing and
+// everything after it is decided in view space on kernel K.
+#pragma once
+
+#include <hlr/hidden_line/visibility.hpp>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace hlr::hidden_line {
+namespace detail {
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void join(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the lowest face
+  }
+};
+
+// One directed use of an undirected mesh edge by a face.
+struct EdgeUse {
+  std::uint64_t key;  // (min vertex << 32) | max vertex
+  std::uint32_t face;
+  bool forward;  // the face runs min -> max
+};
+
+inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+}
+
+// Model-space facts about one mesh's faces, independent of the view.
+struct MeshTopology {
+  std::vector<EdgeUse> uses;                 // sorted by key
+  std::vector<bool> closed_component;        // per face
+  std::vector<std::array<std::uint32_t, 3>> plane_vertices;  // per face: three non-collinear corners
+  std::vector<std::uint32_t> coplanar_group; // per face: lowest face of its coplanar, connected group
+  std::size_t closed_components = 0, open_components = 0;
+};
+
+inline MeshTopology analyse_mesh(const Mesh& mesh) {
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  const std::size_t nf = mesh.faces.size();
+  MeshTopology t;
+  auto point = [&](std::uint32_t v) {
+    const auto& p = mesh.vertices[v];
+    return EK::Point_3(p[0], p[1], p[2]);
+  };
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const auto& face = mesh.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
+      t.uses.push_back({edge_key(a, b), f, a < b});
+    }
+  }
+  std::sort(t.uses.begin(), t.uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return x.key != y.key ? x.key < y.key : x.face < y.face;
+  });
+
+  t.plane_vertices.resize(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const auto& face = mesh.faces[f];
+    t.plane_vertices[f] = {face[0], face[1], face[2]};
+    for (std::size_t k = 2; k < face.size(); ++k) {
+      if (!CGAL::collinear(point(face[0]), point(face[1]), point(face[k]))) {
+        t.plane_vertices[f] = {face[0], face[1], face[k]};
+        break;
+      }
+    }
+  }
+
+  // Components, and whether each is closed and consistently oriented: every edge has exactly two
+  // faces that run it in opposite directions.
+  UnionFind components(nf);
+  for (std::size_t i = 0; i < t.uses.size();) {
+    std::size_t j = i;
+    while (j < t.uses.size() && t.uses[j].key == t.uses[i].key) ++j;
+    for (std::size_t k = i + 1; k < j; ++k) components.join(t.uses[i].face, t.uses[k].face);
+    i = j;
+  }
+  std::vector<bool> component_closed(nf, true);
+  for (std::size_t i = 0; i < t.uses.size();) {
+    std::size_t j = i;
+    while (j < t.uses.size() && t.uses[j].key == t.uses[i].key) ++j;
+    const bool manifold_pair = j - i == 2 && t.uses[i].forward != t.uses[i + 1].forward;
+    if (!manifold_pair) component_closed[components.find(t.uses[i].face)] = false;
+    i = j;
+  }
+  t.closed_component.resize(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const std::uint32_t root = components.find(f);
+    t.closed_component[f] = component_closed[root];
+    if (root == f) ++(component_closed[root] ? t.closed_components : t.open_components);
+  }
+
+  // Coplanar groups: faces joined across an edge they run in opposite directions, with every
+  // corner of one in the plane of the other.
+  UnionFind groups(nf);
+  auto in_plane = [&](std::uint32_t f, std::uint32_t g) {
+    const auto& pv = t.plane_vertices[f];
+    const EK::Point_3 a = point(pv[0]), b = point(pv[1]), c = point(pv[2]);
+    for (std::uint32_t v : mesh.faces[g])
+      if (!CGAL::coplanar(a, b, c, point(v))) return false;
+    return true;
+  };
+  for (std::size_t i = 0; i + 1 < t.uses.size(); ++i) {
+    const EdgeUse& u = t.uses[i];
+    const EdgeUse& w = t.uses[i + 1];
+    if (u.key != w.key || (i + 2 < t.uses.size() && t.uses[i + 2].key == u.key) ||
+        (i > 0 && t.uses[i - 1].key == u.key))
+      continue;
+    if (u.forward == w.forward || u.face == w.face) continue;
+    if (in_plane(u.face, w.face)) groups.join(u.face, w.face);
+  }
+  t.coplanar_group.resize(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) t.coplanar_group[f] = groups.find(f);
+  return t;
+}
+
+}  // namespace detail
+
+template <class K>
+Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const SourceOptions& options) {
+  using G = Geometry<K>;
+  using FT = typename G::FT;
+  using P = typename G::Point;
+  Sources<K> out;
+
+  for (std::uint32_t mi = 0; mi < meshes.size(); ++mi) {
+    const Mesh& mesh = meshes[mi];
+    const std::size_t nf = mesh.faces.size();
+    out.stats.faces += nf;
+    const detail::MeshTopology topo = detail::analyse_mesh(mesh);
+    out.stats.closed_components += topo.closed_components;
+    out.stats.open_components += topo.open_components;
+
+    std::vector<ViewPoint<K>> vp(mesh.vertices.size());
+    std::vector<P> p2(mesh.vertices.size());
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      vp[v] = frame.to_view(mesh.vertices[v]);
+      p2[v] = G::point(vp[v].x, vp[v].y);
+    }
+
+    // One support line per mesh edge.
+    std::vector<clip::LineId> edge_line(topo.uses.size());
+    for (std::size_t i = 0; i < topo.uses.size(); ++i) {
+      if (i > 0 && topo.uses[i].key == topo.uses[i - 1].key) {
+        edge_line[i] = edge_line[i - 1];
+        continue;
+      }
+      const std::uint32_t v0 = std::uint32_t(topo.uses[i].key >> 32), v1 = std::uint32_t(topo.uses[i].key);
+      edge_line[i] = static_cast<clip::LineId>(out.lines.size());
+      out.lines.push_back({p2[v0], p2[v1]});
+      LineOrigin origin;
+      origin.kind = LineOrigin::mesh_edge;
+      origin.mesh = static_cast<std::int32_t>(mi);
+      origin.v0 = v0;
+      origin.v1 = v1;
+      out.line_origins.push_back(origin);
+    }
+    auto line_of = [&](std::uint32_t a, std::uint32_t b) {
+      const std::uint64_t key = detail::edge_key(a, b);
+      auto it = std::lower_bound(topo.uses.begin(), topo.uses.end(), key,
+                                 [](const detail::EdgeUse& u, std::uint64_t k) { return u.key < k; });
+      return edge_line[static_cast<std::size_t>(it - topo.uses.begin())];
+    };
+
+    // Facing: the sign of the projected area (+1 toward the viewer).
+    std::vector<int> facing(nf);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      const auto& face = mesh.faces[f];
+      if (face.size() == 3) {
+        facing[f] = G::orientation(p2[face[0]], p2[face[1]], p2[face[2]]);
+      } else {
+        clip::Contour<K> c;
+        for (std::uint32_t v : face) c.points.push_back(p2[v]);
+        facing[f] = G::sign(clip::twice_signed_area(c));
+      }
+    }
+    std::vector<bool> keep(nf);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      if (facing[f] == 0) {
+        ++out.stats.edge_on_faces_removed;
+      } else if (facing[f] < 0 && options.remove_back_faces && topo.closed_component[f]) {
+        ++out.stats.back_faces_removed;
+      } else {
+        keep[f] = true;
+      }
+    }
+
+    // A face's contour, counter-clockwise in the view.
+    auto face_contour = [&](std::uint32_t f) {
+      const auto& face = mesh.faces[f];
+      clip::Contour<K> c;
+      const std::size_t n = face.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t k = facing[f] > 0 ? i : n - 1 - i;
+        const std::size_t next = facing[f] > 0 ? (i + 1) % n : (2 * n - 2 - i) % n;
+        c.points.push_back(p2[face[k]]);
+        c.lines.push_back(line_of(face[k], face[next]));
+      }
+      return c;
+    };
+    auto plane_of = [&](std::uint32_t f) {
+      const auto& pv = topo.plane_vertices[f];
+      const ViewPoint<K>&a = vp[pv[0]], &b = vp[pv[1]], &c = vp[pv[2]];
+      const FT ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+      const FT wx = c.x - a.x, wy = c.y - a.y, wz = c.z - a.z;
+      const FT nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+      DepthPlane<K> plane;
+      plane.a = -nx / nz;
+      plane.b = -ny / nz;
+      plane.c = a.z - plane.a * a.x - plane.b * a.y;
+      return plane;
+    };
+    auto add_source = [&](clip::Polygon<K> polygon, std::vector<std::uint32_t> faces) {
+      SourcePolygon<K> s;
+      s.polygon = std::move(polygon);
+      s.plane = plane_of(faces.front());
+      s.mesh = mi;
+      s.faces = std::move(faces);
+      out.polygons.push_back(std::move(s));
+    };
+
+    // Groups in order of their lowest face, so sources are ordered by (mesh, first face).
+    std::vector<std::vector<std::uint32_t>> members(nf);
+    for (std::uint32_t f = 0; f < nf; ++f)
+      if (keep[f]) members[options.consolidate ? topo.coplanar_group[f] : f].push_back(f);
+    for (std::uint32_t g = 0; g < nf; ++g) {
+      const auto& faces = members[g];
+      if (faces.empty()) continue;
+      if (faces.size() > 1) {
+        std::vector<clip::Contour<K>> contours;
+        for (std::uint32_t f : faces) contours.push_back(face_contour(f));
+        try {
+          auto merged = clip::merge_polygons<K>(contours, out.lines);
+          out.stats.faces_consolidated += faces.size();
+          for (auto& polygon : merged) add_source(std::move(polygon), faces);
+          continue;
+        } catch (const clip::ClipError&) {
+          // Faces of the group overlap in the view (only inexact kernels get here): keep them apart.
+        }
+      }
+      for (std::uint32_t f : faces) {
+        clip::Polygon<K> polygon{face_contour(f), {}};
+        if (mesh.faces[f].size() > 3 && clip::normalize_polygon(polygon)) {
+          ++out.stats.non_simple_faces_skipped;
+          continue;
+        }
+        add_source(std::move(polygon), {f});
+      }
+    }
+  }
+  out.stats.sources = out.polygons.size();
+  return out;
+}
+
+}  // namespace hlr::hidden_line

@@ -194,6 +194,7 @@ class Overlay {
   std::vector<Piece> pieces_;
   std::vector<GraphEdge> graph_;
   std::vector<std::uint32_t> ring_start_, ring_, pos_;  // half-edges around each vertex, CCW
+  std::vector<std::uint8_t> upper_;                    // per half-edge: points into the upper half-plane
   std::vector<std::uint8_t> result_;   // per half-edge: bit 0 inside list, bit 1 outside list
 };
 
@@ -240,7 +241,12 @@ void Overlay<K>::test_pair(std::uint32_t i, std::uint32_t j) {
     const SupportLine<K>& l1 = (*lines_)[e.line];
     const SupportLine<K>& l2 = (*lines_)[f.line];
     const std::uint32_t x = static_cast<std::uint32_t>(raw_.size());
-    raw_.push_back(G::line_intersection(l1.a, l1.b, l2.a, l2.b));
+    try {
+      raw_.push_back(G::line_intersection(l1.a, l1.b, l2.a, l2.b));
+    } catch (const std::runtime_error&) {
+      // Exact predicates never call parallel lines crossing; rounded constructions can.
+      throw ClipError("crossing edges lie on parallel lines");
+    }
     splits_.push_back({i, x});
     splits_.push_back({j, x});
     return;
@@ -323,21 +329,22 @@ void Overlay<K>::sort_rings() {
   for (std::uint32_t he = 0; he < 2 * graph_.size(); ++he) ring_[fill[origin(he)]++] = he;
 
   pos_.resize(2 * graph_.size());
+  upper_.resize(2 * graph_.size());
   for (std::uint32_t v = 0; v < nv; ++v) {
     auto first = ring_.begin() + ring_start_[v], last = ring_.begin() + ring_start_[v + 1];
-    if (last - first > 1) {
+    // Two edges are in cyclic order whichever comes first.
+    if (last - first > 2) {
       const P& o = vertices_[v];
-      // Upper half-plane: angle in [0, pi). Within a half, by orientation.
-      auto upper = [&](const P& t) {
-        const int cy = G::compare_y(t, o);
-        return cy > 0 || (cy == 0 && G::compare_x(t, o) > 0);
-      };
+      // Upper half-plane: angle in [0, pi). Within a half, by orientation. Vertex ids follow xy
+      // order, so a target with a higher id lies in the upper half exactly when it is not level.
+      for (auto it = first; it != last; ++it) {
+        const std::uint32_t t = target(*it);
+        const int cy = G::compare_y(vertices_[t], o);
+        upper_[*it] = cy > 0 || (cy == 0 && t > v);
+      }
       std::sort(first, last, [&](std::uint32_t h1, std::uint32_t h2) {
-        const P& t1 = vertices_[target(h1)];
-        const P& t2 = vertices_[target(h2)];
-        const bool u1 = upper(t1), u2 = upper(t2);
-        if (u1 != u2) return u1;
-        return G::orientation(o, t1, t2) > 0;
+        if (upper_[h1] != upper_[h2]) return upper_[h1] > upper_[h2];
+        return G::orientation(o, vertices_[target(h1)], vertices_[target(h2)]) > 0;
       });
     }
     for (std::uint32_t k = ring_start_[v]; k < ring_start_[v + 1]; ++k) pos_[ring_[k]] = k;
@@ -485,32 +492,34 @@ std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
     if (!path.empty()) throw ClipError("result boundary is inconsistent");
   }
 
-  // Holes go to the innermost outer contour that contains them.
+  // Holes go to the innermost outer contour that contains them. Result contours never cross, so
+  // of two outer contours that both contain a hole, one lies inside the other.
   std::vector<Polygon<K>> polygons(outers.size());
   std::vector<CGAL::Bbox_2> boxes(outers.size());
   for (std::size_t i = 0; i < outers.size(); ++i) {
     boxes[i] = contour_box(outers[i]);
     polygons[i].outer = std::move(outers[i]);
   }
-  std::vector<typename Geometry<K>::FT> areas;
-  if (outers.size() > 1 && !holes.empty()) {
-    areas.reserve(polygons.size());
-    for (const auto& p : polygons) areas.push_back(twice_signed_area(p.outer));
-  }
+  // Where `inner` lies relative to `outer`, judged on its first vertex off that contour; the
+  // midpoint of an edge if all its vertices are on it.
+  auto contains = [&](const Contour<K>& outer, const Contour<K>& inner) {
+    int side = 0;
+    for (std::size_t k = 0; k < inner.points.size() && side == 0; ++k) side = side_of_contour(outer, inner.points[k]);
+    for (std::size_t k = 0; k < inner.points.size() && side == 0; ++k)
+      side = side_of_contour(outer, G::midpoint(inner.points[k], inner.points[(k + 1) % inner.points.size()]));
+    return side > 0;
+  };
+  auto box_inside = [](const CGAL::Bbox_2& in, const CGAL::Bbox_2& out) {
+    return in.xmin() >= out.xmin() && in.xmax() <= out.xmax() && in.ymin() >= out.ymin() && in.ymax() <= out.ymax();
+  };
   for (Contour<K>& hole : holes) {
-    std::size_t best = SIZE_MAX;
-    if (polygons.size() == 1) {
-      best = 0;
-    } else {
+    std::size_t best = polygons.size() == 1 ? 0 : SIZE_MAX;
+    if (best == SIZE_MAX) {
       const CGAL::Bbox_2 hb = contour_box(hole);
       for (std::size_t i = 0; i < polygons.size(); ++i) {
-        const CGAL::Bbox_2& ob = boxes[i];
-        if (hb.xmin() < ob.xmin() || hb.xmax() > ob.xmax() || hb.ymin() < ob.ymin() || hb.ymax() > ob.ymax()) continue;
-        int side = 0;
-        for (std::size_t k = 0; k < hole.points.size() && side == 0; ++k)
-          side = side_of_contour(polygons[i].outer, hole.points[k]);
-        if (side == 0) side = side_of_contour(polygons[i].outer, G::midpoint(hole.points[0], hole.points[1]));
-        if (side > 0 && (best == SIZE_MAX || areas[i] < areas[best])) best = i;
+        if (!box_inside(hb, boxes[i]) || !contains(polygons[i].outer, hole)) continue;
+        if (best == SIZE_MAX || (box_inside(boxes[i], boxes[best]) && contains(polygons[best].outer, polygons[i].outer)))
+          best = i;
       }
     }
     if (best == SIZE_MAX) throw ClipError("a hole of the result lies in no outer contour");

@@ -13,8 +13,8 @@ inline std::string contour_name(std::size_t c) {
   return c == 0 ? std::string("outer contour") : "hole " + std::to_string(c - 1);
 }
 
-// Drops repeated consecutive points; original[k] is the input index of the k-th kept point, so
-// that messages name edges as the user numbered them.
+// Drops repeated consecutive points; original[k] is the input index of the edge that starts at the
+// k-th kept point, so that messages name edges as the user numbered them.
 template <class K>
 void drop_repeated_points(Contour<K>& c, std::vector<std::size_t>& original) {
   using G = Geometry<K>;
@@ -23,6 +23,7 @@ void drop_repeated_points(Contour<K>& c, std::vector<std::size_t>& original) {
   for (std::size_t i = 0; i < c.points.size(); ++i) {
     if (!kept.points.empty() && G::equal(c.points[i], kept.points.back())) {
       kept.lines.back() = c.lines[i];  // the zero-length edge gives way to the next one
+      original.back() = i;
       continue;
     }
     kept.points.push_back(c.points[i]);

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace hlr::hidden_line {
 namespace detail {
@@ -48,7 +47,7 @@ class AreaSort {
     list.reserve(src_.polygons.size());
     for (std::uint32_t s = 0; s < src_.polygons.size(); ++s)
       list.push_back({src_.polygons[s].polygon, s, box_of(src_.polygons[s].polygon)});
-    resolve(list, SIZE_MAX);
+    resolve(list);
     return std::move(map_);
   }
 
@@ -172,32 +171,20 @@ class AreaSort {
     }
   }
 
-  // Solves visibility within `list`. `forced`, if given, is the item that must go first: it lies
-  // in front of the piece whose region the list covers.
-  void resolve(std::vector<Item>& list, std::size_t forced) {
-    // Each level's front lies strictly nearer than its parent's over its whole region, so the depth
-    // is bounded by the number of sources; deeper means the kernel decided inconsistently.
+  // Solves visibility within `list`: the pieces of one region, which nothing outside the list
+  // covers. Along a chain of recursive calls every front lies strictly nearer than the one before
+  // it at every point of the inner call's region, so no source appears twice on the chain.
+  void resolve(std::vector<Item>& list) {
     if (++depth_ > src_.polygons.size() + 1) throw clip::ClipError("area sort recursion does not converge");
     // Kept farthest first, so the front item is at the back of the vector.
-    std::optional<Item> first;
-    if (forced != SIZE_MAX) {
-      first = std::move(list[forced]);
-      list.erase(list.begin() + static_cast<std::ptrdiff_t>(forced));
-    }
     std::stable_sort(list.begin(), list.end(), [&](const Item& x, const Item& y) { return nearer(y, x); });
 
-    std::vector<Item> rest, ahead;
+    std::vector<Item> rest;
     std::vector<Polygon> subjects;
     std::vector<std::size_t> subject_items;
-    while (first || !list.empty()) {
-      Item front;
-      if (first) {
-        front = std::move(*first);
-        first.reset();
-      } else {
-        front = std::move(list.back());
-        list.pop_back();
-      }
+    while (!list.empty()) {
+      Item front = std::move(list.back());
+      list.pop_back();
       // Only items whose boxes overlap the front piece can be cut by it.
       subjects.clear();
       subject_items.clear();
@@ -207,7 +194,7 @@ class AreaSort {
           subjects.push_back(std::move(list[i].polygon));
         }
       }
-      ahead.clear();
+      std::vector<Item> ahead;
       if (!subjects.empty()) {
         ++map_.stats.clips;
         clip::ClipRegion<K> region(front.polygon, src_.lines);
@@ -232,16 +219,23 @@ class AreaSort {
         map_.visible.push_back({std::move(front.polygon), front.source, -1});
         continue;
       }
-      // The rough order was wrong here: solve the front piece's region with the nearest of what
-      // lies ahead of it in front.
+      // The rough order was wrong here: what lies ahead hides that much of the front piece, and
+      // is solved among itself (it lies within the front piece, apart from the rest of the list).
       ++map_.stats.recursions;
-      std::size_t lead = 0;
-      for (std::size_t i = 1; i < ahead.size(); ++i)
-        if (nearer(ahead[i], ahead[lead])) lead = i;
-      std::vector<Item> sub = std::move(ahead);
-      ahead = {};
-      sub.push_back(std::move(front));
-      resolve(sub, lead);
+      std::vector<Polygon> remaining{std::move(front.polygon)};
+      for (const Item& a : ahead) {
+        clip::ClipRegion<K> region(a.polygon, src_.lines);
+        std::vector<Polygon> outside;
+        for (auto& r : clip::clip_list<K>(remaining, region)) {
+          for (auto& piece : r.inside)
+            map_.hidden.push_back({std::move(piece), front.source, static_cast<std::int32_t>(a.source)});
+          for (auto& piece : r.outside) outside.push_back(std::move(piece));
+        }
+        remaining.swap(outside);
+        if (remaining.empty()) break;
+      }
+      for (auto& piece : remaining) map_.visible.push_back({std::move(piece), front.source, -1});
+      resolve(ahead);
     }
     --depth_;
   }

@@ -250,7 +250,8 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
           for (auto& polygon : merged) add_source(std::move(polygon), faces);
           continue;
         } catch (const clip::ClipError&) {
-          // Faces of the group overlap in the view (only inexact kernels get here): keep them apart.
+          // The group's faces overlap in the view (a face and its reverse, with back faces kept;
+          // or rounding on an inexact kernel): keep them apart.
         }
       }
       for (std::uint32_t f : faces) {

@@ -55,3 +55,17 @@ TEST(Kernel, NamesRoundTrip) {
 
 }  // namespace
 }  // namespace hlr
+
+namespace hlr {
+namespace {
+
+TEST(ExactKernel, ToDoubleRoundsToNearest) {
+  using G = Geometry<ExactKernel>;
+  // 13/6 lies between 2.1666666666666665 and 2.166666666666667; the first is nearer.
+  auto p = G::line_intersection(G::point(0, 0), G::point(6, 13), G::point(1, -5), G::point(1, 5));
+  EXPECT_EQ(G::to_double(G::y(p)), 2.1666666666666665);
+  EXPECT_EQ(G::to_double(ExactKernel::FT(0.1)), 0.1);
+}
+
+}  // namespace
+}  // namespace hlr

@@ -53,6 +53,9 @@ int uniform_int(Rng& rng, int lo, int hi);            // [lo, hi], inclusive
 
 // Why the polygon is not valid (first defect found), or an empty string when it is. Exact.
 std::string validity_defect(const RawPolygon& polygon);
+// The same for a polygon known to be valid without its last hole: checks only that hole against
+// the outer contour and the other holes (for adding holes one at a time).
+std::string last_hole_defect(const RawPolygon& polygon);
 
 // Geometric transforms, evaluated in double (rounded once per coordinate).
 RawPolygon translated(const RawPolygon& p, double dx, double dy);

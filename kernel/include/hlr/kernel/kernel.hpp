@@ -80,10 +80,49 @@ struct CgalGeometry {
   static int orientation(const Point& a, const Point& b, const Point& c) {
     return static_cast<int>(CGAL::orientation(a, b, c));
   }
-  static int compare_x(const Point& a, const Point& b) { return static_cast<int>(CGAL::compare_x(a, b)); }
-  static int compare_y(const Point& a, const Point& b) { return static_cast<int>(CGAL::compare_y(a, b)); }
-  static int compare_xy(const Point& a, const Point& b) { return static_cast<int>(CGAL::compare_xy(a, b)); }
-  static bool equal(const Point& a, const Point& b) { return a == b; }
+  // Comparisons first look at the interval approximations Epeck keeps with every point, which
+  // decide almost every case without CGAL's filter machinery; ties go to CGAL's exact predicate.
+  static int compare_x(const Point& a, const Point& b) {
+    if constexpr (exact_constructions) {
+      const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
+      if (c != 2) return c;
+    }
+    return static_cast<int>(CGAL::compare_x(a, b));
+  }
+  static int compare_y(const Point& a, const Point& b) {
+    if constexpr (exact_constructions) {
+      const int c = compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y());
+      if (c != 2) return c;
+    }
+    return static_cast<int>(CGAL::compare_y(a, b));
+  }
+  static int compare_xy(const Point& a, const Point& b) {
+    if constexpr (exact_constructions) {
+      const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
+      if (c == -1 || c == 1) return c;
+      if (c == 0) {
+        const int d = compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y());
+        if (d != 2) return d;
+      }
+    }
+    return static_cast<int>(CGAL::compare_xy(a, b));
+  }
+  static bool equal(const Point& a, const Point& b) {
+    if constexpr (exact_constructions) {
+      if (compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x()) % 2 != 0 ||
+          compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y()) % 2 != 0)
+        return false;
+    }
+    return a == b;
+  }
+  // -1 or +1 when the intervals are apart, 0 when both are the same single number, 2 otherwise.
+  template <class Interval>
+  static int compare_intervals(const Interval& a, const Interval& b) {
+    if (a.sup() < b.inf()) return -1;
+    if (a.inf() > b.sup()) return 1;
+    if (a.inf() == a.sup() && b.inf() == b.sup()) return 0;  // the same double, exactly
+    return 2;
+  }
 
   // The intersection of the line through a, b with the line through c, d (not parallel).
   static Point line_intersection(const Point& a, const Point& b, const Point& c, const Point& d) {
@@ -98,7 +137,20 @@ struct CgalGeometry {
 
   static FT x(const Point& p) { return p.x(); }
   static FT y(const Point& p) { return p.y(); }
-  static double to_double(const FT& v) { return CGAL::to_double(v); }
+  // The double nearest to v (ties to the lower one): output is rounded once, correctly.
+  static double to_double(const FT& v) {
+    if constexpr (exact_constructions) {
+      const std::pair<double, double> approx = CGAL::to_interval(v);
+      if (approx.first == approx.second) return approx.first;
+      using ET = typename FT::Exact_type;
+      const ET& e = CGAL::exact(v);
+      const std::pair<double, double> tight = CGAL::to_interval(e);
+      if (tight.first == tight.second) return tight.first;
+      return e - ET(tight.first) <= ET(tight.second) - e ? tight.first : tight.second;
+    } else {
+      return CGAL::to_double(v);
+    }
+  }
   static CGAL::Bbox_2 bbox(const Point& p) { return p.bbox(); }
 
   static std::string exact_string(const FT& v) {

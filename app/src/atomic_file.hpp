@@ -1,0 +1,36 @@
+// Writes a file atomically: into a temporary file beside the target, renamed over the target only
+// once everything is written and flushed. On any failure (and on SIGINT, SIGTERM, SIGHUP) the
+// temporary file is removed, so a reader never sees a partial or stale output file.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace hlr::app {
+
+class AtomicFile {
+ public:
+  // Creates the temporary file next to `path`. Throws UserError(path, "cannot write (...)") when
+  // the directory does not exist or is not writable, or when `path` is an existing directory.
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();  // removes the temporary file unless commit() succeeded
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  void write(std::string_view data);  // throws UserError
+  // Flushes to disk and renames the temporary file into place. Throws UserError.
+  void commit();
+
+  const std::string& path() const { return path_; }
+
+ private:
+  void fail(int error);  // removes the temporary file, then throws UserError for errno `error`
+  void discard() noexcept;
+
+  std::string path_;
+  std::string temp_path_;
+  int fd_ = -1;
+  bool committed_ = false;
+};
+
+}  // namespace hlr::app

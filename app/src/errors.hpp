@@ -1,0 +1,21 @@
+// Errors the hlr program reports to its user: one line on stderr, "hlr: FILE: problem", exit 1.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace hlr::app {
+
+// A problem with a file the user named (an input that cannot be read or is not valid, an output
+// that cannot be written). what() is "FILE: problem"; main prints it behind "hlr: ".
+struct UserError : std::runtime_error {
+  UserError(const std::string& file, const std::string& problem) : std::runtime_error(file + ": " + problem) {}
+};
+
+// Exit codes of the hlr program.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInputError = 1;  // bad input or unwritable output: a UserError
+inline constexpr int kExitUsage = 2;       // bad command line
+inline constexpr int kExitContract = 3;    // a result breaks a promise of the exact path (a bug)
+
+}  // namespace hlr::app

@@ -1,0 +1,85 @@
+// hlr: the command-line program. A dispatcher: every subcommand lives in its own file
+// (clip_command.cpp, ...) and registers itself through subcommand.hpp.
+//
+// Exit codes: 0 success, 1 bad input or unwritable output (one line on stderr, "hlr: FILE: problem"),
+// 2 bad command line, 3 internal error (a broken promise of the engine).
+#include "errors.hpp"
+#include "subcommand.hpp"
+
+#include <hlr/kernel/scene.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <new>
+#include <string>
+#include <vector>
+
+#ifndef HLR_VERSION
+#define HLR_VERSION "unknown"
+#endif
+
+namespace {
+
+// Messages are one line: a file name or a library's message must not break that.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
+int report(const std::string& message) {
+  std::cerr << "hlr: " << one_line(message) << std::endl;
+  return hlr::app::kExitInputError;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace hlr::app;
+
+  CLI::App app{"hlr: an exact hidden-line engine for CAD drawings.", "hlr"};
+  app.set_version_flag("--version", "hlr " HLR_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough(false);
+
+  std::vector<Subcommand> commands;
+  commands.push_back(add_clip_command(app));
+  commands.push_back(add_surfaces_command(app));
+
+  app.footer(
+      "Examples:\n"
+      "  hlr surfaces fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg\n"
+      "  hlr clip fixtures/clip/subject.json fixtures/clip/clip.json -o out/clip-result.json\n"
+      "\n"
+      "Run 'hlr SUBCOMMAND --help' for a subcommand's options; formats are in docs/FORMATS.md.\n"
+      "Exit status: 0 success, 1 bad input or unwritable output, 2 bad command line, 3 internal error.");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version: print, exit 0
+    std::string help = "hlr --help";
+    for (const auto& command : commands)
+      if (command.app->parsed()) help = "hlr " + command.app->get_name() + " --help";
+    std::cerr << "hlr: " << one_line(e.what()) << " (see '" << help << "')" << std::endl;
+    return kExitUsage;
+  }
+
+  for (const auto& command : commands) {
+    if (!command.app->parsed()) continue;
+    try {
+      return command.run();
+    } catch (const UserError& e) {
+      return report(e.what());
+    } catch (const hlr::ImportError& e) {
+      return report(e.what());
+    } catch (const std::bad_alloc&) {
+      return report("out of memory");
+    } catch (const std::exception& e) {
+      std::cerr << "hlr: internal error: " << one_line(e.what()) << std::endl;
+      return kExitContract;
+    }
+  }
+  return kExitUsage;  // unreachable: require_subcommand(1)
+}

@@ -1,0 +1,54 @@
+// hlr export, surfaces: the VisibilityMap of one view as a document.
+//
+//   surfaces_json  the hlr-surfaces/1 contract (DESIGN.md, docs/FORMATS.md): sources with their
+//                  faces and planes, visible and hidden polygons with source and occluder tags,
+//                  coordinates in the orthonormal view frame, rounded once; `exact` adds the exact
+//                  values in the unnormalized frame.
+//   surfaces_svg   a picture for a person: visible polygons filled in a flat shade of their
+//                  normal, hidden polygons as dashed outlines.
+//
+// Writers return the document; the caller writes it to disk (atomically).
+#pragma once
+
+#include <hlr/hidden_line/visibility.hpp>
+
+#include <string>
+#include <vector>
+
+namespace hlr::exporter {
+
+struct InputInfo {
+  std::vector<std::string> files;
+  std::size_t faces = 0, vertices = 0;
+};
+
+// Seconds per stage, reported in "stats".
+struct StageTimes {
+  double read = 0, sources = 0, sort = 0, total = 0;
+};
+
+template <class K>
+struct SurfacesDocument {
+  const InputInfo& input;
+  const std::vector<Mesh>& meshes;
+  const ViewFrame<K>& frame;
+  const hidden_line::Sources<K>& sources;
+  const hidden_line::VisibilityMap<K>& map;
+  KernelKind kernel;
+  StageTimes times;
+};
+
+template <class K>
+std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact);
+template <class K>
+std::string surfaces_svg(const SurfacesDocument<K>& doc);
+
+#define HLR_EXPORT_SURFACES_DECLARE(K, EXTERN)                                    \
+  EXTERN template std::string surfaces_json<K>(const SurfacesDocument<K>&, bool); \
+  EXTERN template std::string surfaces_svg<K>(const SurfacesDocument<K>&);
+
+HLR_EXPORT_SURFACES_DECLARE(ExactKernel, extern)
+HLR_EXPORT_SURFACES_DECLARE(EpickKernel, extern)
+HLR_EXPORT_SURFACES_DECLARE(DoubleKernel, extern)
+
+}  // namespace hlr::exporter

@@ -1,4 +1,4 @@
-// End-to-end tests of `hlr clip`: the program is run as a user runs it, and its exit code, stdout,
+// End-to-end tests of `hlr clip` and `hlr surfaces`: the program is run as a user runs it, and its exit code, stdout,
 // stderr and output file are checked. Results are checked exactly, with GMP rationals read from the
 // output's "outer_exact" / "holes_exact" strings, not with the program's own arithmetic.
 #include <gmpxx.h>
@@ -620,6 +620,78 @@ TEST_F(CliClip, FailedRunKeepsTheOldOutput) {
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_EQ(slurp(out()), "old");
   EXPECT_EQ(entries(dir_ / "out"), std::vector<std::string>{"result.json"});
+}
+
+}  // namespace
+
+// ---- hlr surfaces ---------------------------------------------------------------------------------
+namespace {
+
+const fs::path kScenes = HLR_SCENE_FIXTURES;
+
+class CliSurfaces : public CliClip {};
+
+TEST_F(CliSurfaces, SolvesTheBundledBracketIntoJsonAndSvg) {
+  const std::string mesh = (kScenes / "l_bracket.off").string();
+  Outcome run = hlr({"surfaces", mesh, "--view", "iso", "-o", out("b.json").string(), "-o", out("b.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  const json doc = json::parse(slurp(out("b.json")));
+  EXPECT_EQ(doc.at("format"), "hlr-surfaces/1");
+  EXPECT_EQ(doc.at("view").at("name"), "iso");
+  EXPECT_EQ(doc.at("input").at("files").at(0), mesh);
+  EXPECT_GT(doc.at("visible").size(), 0u);
+  for (const auto& h : doc.at("hidden")) EXPECT_GE(h.at("occluder").get<int>(), 0);
+  EXPECT_GT(doc.at("stats").at("back_faces_removed").get<int>(), 0);
+  const std::string svg = slurp(out("b.svg"));
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"b.json", "b.svg"}));
+}
+
+TEST_F(CliSurfaces, EveryNamedViewAndADirectionWork) {
+  const std::string mesh = (kScenes / "cube.off").string();
+  for (const char* view : {"front", "back", "top", "bottom", "left", "right", "iso"}) {
+    Outcome run = hlr({"surfaces", mesh, "--view", view, "-o", out("c.json").string()});
+    EXPECT_EQ(run.exit_code, 0) << view << ": " << run.err;
+  }
+  Outcome run = hlr({"surfaces", mesh, "--dir", "1,2,-3", "--up", "0,0,1", "--exact", "-o", out("c.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const json doc = json::parse(slurp(out("c.json")));
+  EXPECT_TRUE(is_rational_text(doc.at("visible").at(0).at("outer_exact").at(0).at(0).get<std::string>()));
+}
+
+TEST_F(CliSurfaces, BadViewsAreUsageErrors) {
+  const std::string mesh = (kScenes / "cube.off").string();
+  for (const std::vector<std::string>& view : {std::vector<std::string>{"--view", "sideways"},
+                                                std::vector<std::string>{"--dir", "0,0,0"},
+                                                std::vector<std::string>{"--dir", "0,0,1", "--up", "0,0,-2"}}) {
+    std::vector<std::string> args{"surfaces", mesh, "-o", out("v.json").string()};
+    args.insert(args.end(), view.begin(), view.end());
+    Outcome run = hlr(args);
+    EXPECT_EQ(run.exit_code, 2) << view.back();
+    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+    EXPECT_EQ(run.err.rfind("hlr: ", 0), 0u) << run.err;
+    EXPECT_TRUE(entries(dir_ / "out").empty());
+  }
+}
+
+TEST_F(CliSurfaces, BadMeshesAndOutputsGiveOneLineAndNoFile) {
+  const std::string truncated = write_input("truncated.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n").string();
+  const std::string missing = in("missing.off").string();
+  const std::string cube = (kScenes / "cube.off").string();
+  struct Case {
+    std::string mesh, output, named;
+  };
+  for (const Case& c : {Case{truncated, out("t.json").string(), truncated}, Case{missing, out("m.json").string(), missing},
+                        Case{cube, out("x.txt").string(), out("x.txt").string()},
+                        Case{cube, (dir_ / "no" / "dir" / "x.svg").string(), (dir_ / "no" / "dir" / "x.svg").string()}}) {
+    Outcome run = hlr({"surfaces", c.mesh, "-o", c.output});
+    EXPECT_EQ(run.exit_code, 1) << c.mesh << " -> " << c.output;
+    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+    EXPECT_EQ(run.err.rfind("hlr: " + c.named + ": ", 0), 0u) << run.err;
+    EXPECT_TRUE(entries(dir_ / "out").empty()) << run.err;
+  }
 }
 
 }  // namespace

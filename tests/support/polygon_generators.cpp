@@ -32,16 +32,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kMaxAttempts = 200;
 
-double signed_area2(const RawContour& c) {
-  double a = 0;
-  for (std::size_t i = 0, n = c.size(); i < n; ++i) {
-    const RawPoint& p = c[i];
-    const RawPoint& q = c[(i + 1) % n];
-    a += p[0] * q[1] - q[0] * p[1];
-  }
-  return a;
-}
-
 // Point in contour, in double (the generators only use it to pick candidates; is_valid decides).
 bool inside_contour(const RawContour& c, double x, double y) {
   bool in = false;
@@ -229,7 +219,7 @@ bool grid_cells_polygon(Rng& rng, int grid, int max_vertices, bool allow_holes, 
   const double drop = std::array{0.0, 0.5, 1.0}[uniform_int(rng, 0, 2)];
   for (auto& loop : loops) {
     RawContour c = drop_straight_vertices(rng, loop, drop);
-    if (signed_area2(loop) > 0) {
+    if (twice_signed_area(loop) > 0) {
       ++outers;
       p.outer = std::move(c);
     } else if (allow_holes) {
@@ -518,6 +508,16 @@ std::string to_cpp(const RawPolygon& p) {
   }
   s += "}}";
   return s;
+}
+
+double twice_signed_area(const RawContour& c) {
+  double a = 0;
+  for (std::size_t i = 0, n = c.size(); i < n; ++i) {
+    const RawPoint& p = c[i];
+    const RawPoint& q = c[(i + 1) % n];
+    a += p[0] * q[1] - q[0] * p[1];
+  }
+  return a;
 }
 
 }  // namespace hlr::testing

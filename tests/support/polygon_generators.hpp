@@ -44,6 +44,9 @@ RawPolygon random_grid_polygon(Rng& rng, int grid, int max_vertices, bool allow_
 // True when the polygon is valid in the sense above (checked exactly with CGAL).
 bool is_valid(const RawPolygon& polygon);
 
+// Twice the signed area, in double (positive counter-clockwise): for orienting, not for checking.
+double twice_signed_area(const RawContour& c);
+
 // ---- helpers (extensions used by the property tests and the stability run) ----
 
 // Uniform draws from raw engine words (portable, see above).

@@ -49,12 +49,7 @@ Subcommand add_clip_command(CLI::App& parent) {
       ->type_name("OUT.json");
   cmd->add_flag("--exact", options->exact,
                 "also write every vertex as exact rationals: \"outer_exact\", \"holes_exact\" (\"p/q\" strings)");
-  cmd->add_option("--kernel", options->kernel,
-                  "number model: exact (exact predicates and constructions, the default), epick (exact "
-                  "predicates, constructions rounded to double) or double (plain floating point)")
-      ->check(CLI::IsMember({"exact", "epick", "double"}))
-      ->capture_default_str()
-      ->type_name("KERNEL");
+  add_kernel_option(*cmd, options->kernel);
   cmd->footer(
       "Writes subject ∩ clip (\"inside\") and subject − clip (\"outside\"), each output edge tagged with\n"
       "the input edge it lies on, and prints the areas with the check area(inside) + area(outside) =\n"

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <string>
 
 namespace hlr::app {
 
@@ -12,6 +13,16 @@ struct Subcommand {
   CLI::App* app = nullptr;   // the parsed subcommand, owned by the top-level app
   std::function<int()> run;  // returns the exit code; may throw UserError
 };
+
+// The --kernel option every computing subcommand has: exact (the default), epick or double.
+inline void add_kernel_option(CLI::App& cmd, std::string& kernel) {
+  cmd.add_option("--kernel", kernel,
+                 "number model: exact (exact predicates and constructions, the default), epick (exact "
+                 "predicates, constructions rounded to double) or double (plain floating point)")
+      ->check(CLI::IsMember({"exact", "epick", "double"}))
+      ->capture_default_str()
+      ->type_name("KERNEL");
+}
 
 // One per subcommand file.
 Subcommand add_clip_command(CLI::App& parent);

@@ -158,10 +158,7 @@ Subcommand add_surfaces_command(CLI::App& parent) {
       ->expected(3)
       ->needs(dir)
       ->type_name("X,Y,Z");
-  cmd->add_option("--kernel", options->kernel, "number model: exact (the default), epick or double")
-      ->check(CLI::IsMember({"exact", "epick", "double"}))
-      ->capture_default_str()
-      ->type_name("KERNEL");
+  add_kernel_option(*cmd, options->kernel);
   cmd->add_flag("--exact", options->exact, "JSON: also write exact coordinates and planes as \"p/q\" strings");
   cmd->add_flag("--keep-back-faces", options->keep_back_faces, "do not remove back faces of closed meshes");
   cmd->add_flag("--no-consolidation", options->no_consolidation, "do not merge coplanar faces into polygons");

@@ -489,7 +489,6 @@ std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
       }
       he = next;
     }
-    if (!path.empty()) throw ClipError("result boundary is inconsistent");
   }
 
   // Holes go to the innermost outer contour that contains them. Result contours never cross, so

@@ -6,10 +6,10 @@
 // faces are consolidated into one polygon with holes, so a tessellated planar face is one polygon.
 //
 // area_sort solves visibility: the nearest polygon clips the rest into inside and outside lists
-// (clip_list); inside pieces behind it are hidden by it; a piece in front of it means the rough
-// depth order was wrong there and the region is solved recursively with that piece in front; a
-// piece that is partly in front and partly behind (penetration) is split exactly along the line
-// where the two planes meet. The result, a VisibilityMap, gives every source's visible pieces and
+// (clip_list); inside pieces behind it are hidden by it; pieces in front of it mean the rough
+// depth order was wrong there: they hide that much of the front piece and are solved among
+// themselves, recursively; a piece that is partly in front and partly behind (penetration) is
+// split exactly along the line where the two planes meet. The result, a VisibilityMap, gives every source's visible pieces and
 // its hidden pieces, each hidden piece tagged with the source that hides it.
 //
 // Depth is decided exactly from each source's plane (DESIGN.md rule 4). Where two sources lie in

@@ -37,6 +37,19 @@ struct EdgeUse {
   bool forward;  // the face runs min -> max
 };
 
+using Uses = std::vector<EdgeUse>::const_iterator;
+
+// Calls visit(first, last) for the uses of each mesh edge (uses sorted by key).
+template <class Visit>
+void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
+  for (Uses first = uses.begin(); first != uses.end();) {
+    const std::uint64_t key = first->key;
+    const Uses last = std::find_if(first, uses.end(), [key](const EdgeUse& u) { return u.key != key; });
+    visit(first, last);
+    first = last;
+  }
+}
+
 inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
   return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
 }
@@ -84,20 +97,14 @@ inline MeshTopology analyse_mesh(const Mesh& mesh) {
   // Components, and whether each is closed and consistently oriented: every edge has exactly two
   // faces that run it in opposite directions.
   UnionFind components(nf);
-  for (std::size_t i = 0; i < t.uses.size();) {
-    std::size_t j = i;
-    while (j < t.uses.size() && t.uses[j].key == t.uses[i].key) ++j;
-    for (std::size_t k = i + 1; k < j; ++k) components.join(t.uses[i].face, t.uses[k].face);
-    i = j;
-  }
+  for_each_edge(t.uses, [&](Uses first, Uses last) {
+    for (Uses it = first + 1; it != last; ++it) components.join(first->face, it->face);
+  });
   std::vector<bool> component_closed(nf, true);
-  for (std::size_t i = 0; i < t.uses.size();) {
-    std::size_t j = i;
-    while (j < t.uses.size() && t.uses[j].key == t.uses[i].key) ++j;
-    const bool manifold_pair = j - i == 2 && t.uses[i].forward != t.uses[i + 1].forward;
-    if (!manifold_pair) component_closed[components.find(t.uses[i].face)] = false;
-    i = j;
-  }
+  for_each_edge(t.uses, [&](Uses first, Uses last) {
+    const bool manifold_pair = last - first == 2 && first[0].forward != first[1].forward;
+    if (!manifold_pair) component_closed[components.find(first->face)] = false;
+  });
   t.closed_component.resize(nf);
   for (std::uint32_t f = 0; f < nf; ++f) {
     const std::uint32_t root = components.find(f);
@@ -115,15 +122,12 @@ inline MeshTopology analyse_mesh(const Mesh& mesh) {
       if (!CGAL::coplanar(a, b, c, point(v))) return false;
     return true;
   };
-  for (std::size_t i = 0; i + 1 < t.uses.size(); ++i) {
-    const EdgeUse& u = t.uses[i];
-    const EdgeUse& w = t.uses[i + 1];
-    if (u.key != w.key || (i + 2 < t.uses.size() && t.uses[i + 2].key == u.key) ||
-        (i > 0 && t.uses[i - 1].key == u.key))
-      continue;
-    if (u.forward == w.forward || u.face == w.face) continue;
-    if (in_plane(u.face, w.face)) groups.join(u.face, w.face);
-  }
+  for_each_edge(t.uses, [&](Uses first, Uses last) {
+    if (last - first != 2) return;
+    const EdgeUse& u = first[0];
+    const EdgeUse& w = first[1];
+    if (u.forward != w.forward && u.face != w.face && in_plane(u.face, w.face)) groups.join(u.face, w.face);
+  });
   t.coplanar_group.resize(nf);
   for (std::uint32_t f = 0; f < nf; ++f) t.coplanar_group[f] = groups.find(f);
   return t;

@@ -44,11 +44,13 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
 
   std::vector<Subcommand> commands;
-  commands.push_back(add_clip_command(app));
+  commands.push_back(add_draw_command(app));
   commands.push_back(add_surfaces_command(app));
+  commands.push_back(add_clip_command(app));
 
   app.footer(
       "Examples:\n"
+      "  hlr draw fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg -o out/bracket.dxf\n"
       "  hlr surfaces fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg\n"
       "  hlr clip fixtures/clip/subject.json fixtures/clip/clip.json -o out/clip-result.json\n"
       "\n"

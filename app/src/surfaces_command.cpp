@@ -1,6 +1,7 @@
 // `hlr surfaces MESH... --view V -o OUT.json|OUT.svg [--kernel exact|epick|double] [--exact]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
+#include "scene_options.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/export/surfaces.hpp>
@@ -15,10 +16,8 @@ namespace hlr::app {
 namespace {
 
 struct SurfacesOptions {
-  std::vector<std::string> meshes, outputs;
-  std::string view = "iso";
-  std::vector<double> direction, up;
-  std::string kernel = "exact";
+  SceneOptions scene;
+  std::vector<std::string> outputs;
   bool exact = false;
   bool keep_back_faces = false;
   bool no_consolidation = false;
@@ -27,17 +26,9 @@ struct SurfacesOptions {
 enum class Format { json, svg };
 
 Format format_of(const std::string& path) {
-  auto ends_with = [&](const char* ext) {
-    const std::string e(ext);
-    return path.size() > e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0;
-  };
-  if (ends_with(".json")) return Format::json;
-  if (ends_with(".svg")) return Format::svg;
+  if (has_extension(path, ".json")) return Format::json;
+  if (has_extension(path, ".svg")) return Format::svg;
   throw UserError(path, "unknown output format (the name must end in .json or .svg)");
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 template <class K>
@@ -46,16 +37,7 @@ int solve(const SurfacesOptions& options, const View& view, KernelKind kind) {
   std::vector<Format> formats;
   for (const auto& out : options.outputs) formats.push_back(format_of(out));
 
-  exporter::InputInfo input;
-  std::vector<Mesh> meshes;
-  for (const auto& path : options.meshes) {
-    ImportReport report;
-    meshes.push_back(load_mesh(path, report));
-    for (const auto& w : report.warnings) std::cerr << "hlr: warning: " << w << '\n';
-    input.files.push_back(path);
-    input.faces += meshes.back().faces.size();
-    input.vertices += meshes.back().vertices.size();
-  }
+  const auto [meshes, input] = load_scene(options.scene.meshes);
   exporter::StageTimes times;
   times.read = seconds_since(start);
   // Large scenes take seconds: say what is happening.
@@ -78,7 +60,7 @@ int solve(const SurfacesOptions& options, const View& view, KernelKind kind) {
     times.sort = seconds_since(mark);
   } catch (const clip::ClipError& e) {
     // Only the inexact kernels get here: their rounded decisions can contradict each other.
-    throw UserError(options.meshes.front(), std::string("the ") + kernel_name(kind) +
+    throw UserError(options.scene.meshes.front(), std::string("the ") + kernel_name(kind) +
                                                 " kernel failed on this view (" + e.what() +
                                                 "); the exact kernel does not");
   }
@@ -106,30 +88,16 @@ int solve(const SurfacesOptions& options, const View& view, KernelKind kind) {
 }
 
 int run(const SurfacesOptions& options) {
-  View view;
-  if (!options.direction.empty()) {
-    view.name = "custom";
-    view.direction = {options.direction[0], options.direction[1], options.direction[2]};
-    view.up = options.up.empty() ? Vec3{0, 0, 1} : Vec3{options.up[0], options.up[1], options.up[2]};
-    // The default up is +Z (CAD convention); looking straight along Z, take +Y instead.
-    if (options.up.empty() && view.direction[0] == 0 && view.direction[1] == 0) view.up = {0, 1, 0};
-  } else if (!named_view(options.view, view)) {
-    std::cerr << "hlr: --view: unknown view \"" << options.view << "\" (use " << named_view_list
-              << ", or --dir X,Y,Z)" << std::endl;
-    return kExitUsage;
-  }
-  if (auto defect = view_defect(view)) {
-    std::cerr << "hlr: " << (options.direction.empty() ? "--view" : "--dir/--up") << ": " << *defect << std::endl;
-    return kExitUsage;
-  }
+  const std::optional<View> view = resolve_view(options.scene);
+  if (!view) return kExitUsage;
   KernelKind kind = KernelKind::exact;
-  parse_kernel_kind(options.kernel, kind);
+  parse_kernel_kind(options.scene.kernel, kind);
   switch (kind) {
-    case KernelKind::epick: return solve<EpickKernel>(options, view, kind);
-    case KernelKind::floating: return solve<DoubleKernel>(options, view, kind);
+    case KernelKind::epick: return solve<EpickKernel>(options, *view, kind);
+    case KernelKind::floating: return solve<DoubleKernel>(options, *view, kind);
     case KernelKind::exact: break;
   }
-  return solve<ExactKernel>(options, view, kind);
+  return solve<ExactKernel>(options, *view, kind);
 }
 
 }  // namespace
@@ -138,27 +106,11 @@ Subcommand add_surfaces_command(CLI::App& parent) {
   auto options = std::make_shared<SurfacesOptions>();
   CLI::App* cmd = parent.add_subcommand(
       "surfaces", "Solve which parts of every face are visible and which are hidden, exactly, in one view.");
-  cmd->add_option("meshes", options->meshes, "mesh files (OFF, OBJ, STL, PLY), drawn together as one scene")
-      ->required()
-      ->type_name("MESH...");
+  add_scene_options(*cmd, options->scene);
   cmd->add_option("-o,--output", options->outputs,
                   "file to write: .json (hlr-surfaces/1) or .svg (a picture); may be given several times")
       ->required()
       ->type_name("OUT");
-  auto* view = cmd->add_option("--view", options->view, std::string("named view: ") + named_view_list)
-                   ->capture_default_str()
-                   ->type_name("NAME");
-  auto* dir = cmd->add_option("--dir", options->direction, "look direction instead of a named view")
-                  ->delimiter(',')
-                  ->expected(3)
-                  ->type_name("X,Y,Z");
-  dir->excludes(view);
-  cmd->add_option("--up", options->up, "up vector for --dir (default +Z, or +Y when looking along Z)")
-      ->delimiter(',')
-      ->expected(3)
-      ->needs(dir)
-      ->type_name("X,Y,Z");
-  add_kernel_option(*cmd, options->kernel);
   cmd->add_flag("--exact", options->exact, "JSON: also write exact coordinates and planes as \"p/q\" strings");
   cmd->add_flag("--keep-back-faces", options->keep_back_faces, "do not remove back faces of closed meshes");
   cmd->add_flag("--no-consolidation", options->no_consolidation, "do not merge coplanar faces into polygons");

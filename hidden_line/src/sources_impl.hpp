@@ -7,6 +7,7 @@
 #pragma once
 
 #include <hlr/hidden_line/visibility.hpp>
+#include <hlr/kernel/mesh_edges.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
@@ -30,30 +31,6 @@ struct UnionFind {
   }
 };
 
-// One directed use of an undirected mesh edge by a face.
-struct EdgeUse {
-  std::uint64_t key;  // (min vertex << 32) | max vertex
-  std::uint32_t face;
-  bool forward;  // the face runs min -> max
-};
-
-using Uses = std::vector<EdgeUse>::const_iterator;
-
-// Calls visit(first, last) for the uses of each mesh edge (uses sorted by key).
-template <class Visit>
-void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
-  for (Uses first = uses.begin(); first != uses.end();) {
-    const std::uint64_t key = first->key;
-    const Uses last = std::find_if(first, uses.end(), [key](const EdgeUse& u) { return u.key != key; });
-    visit(first, last);
-    first = last;
-  }
-}
-
-inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-}
-
 // Model-space facts about one mesh's faces, independent of the view.
 struct MeshTopology {
   std::vector<EdgeUse> uses;                 // sorted by key
@@ -71,16 +48,7 @@ inline MeshTopology analyse_mesh(const Mesh& mesh) {
     const auto& p = mesh.vertices[v];
     return EK::Point_3(p[0], p[1], p[2]);
   };
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    const auto& face = mesh.faces[f];
-    for (std::size_t i = 0; i < face.size(); ++i) {
-      const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
-      t.uses.push_back({edge_key(a, b), f, a < b});
-    }
-  }
-  std::sort(t.uses.begin(), t.uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.key != y.key ? x.key < y.key : x.face < y.face;
-  });
+  t.uses = edge_uses(mesh);
 
   t.plane_vertices.resize(nf);
   for (std::uint32_t f = 0; f < nf; ++f) {
@@ -97,11 +65,11 @@ inline MeshTopology analyse_mesh(const Mesh& mesh) {
   // Components, and whether each is closed and consistently oriented: every edge has exactly two
   // faces that run it in opposite directions.
   UnionFind components(nf);
-  for_each_edge(t.uses, [&](Uses first, Uses last) {
-    for (Uses it = first + 1; it != last; ++it) components.join(first->face, it->face);
+  for_each_edge(t.uses, [&](EdgeUses first, EdgeUses last) {
+    for (EdgeUses it = first + 1; it != last; ++it) components.join(first->face, it->face);
   });
   std::vector<bool> component_closed(nf, true);
-  for_each_edge(t.uses, [&](Uses first, Uses last) {
+  for_each_edge(t.uses, [&](EdgeUses first, EdgeUses last) {
     const bool manifold_pair = last - first == 2 && first[0].forward != first[1].forward;
     if (!manifold_pair) component_closed[components.find(first->face)] = false;
   });
@@ -122,7 +90,7 @@ inline MeshTopology analyse_mesh(const Mesh& mesh) {
       if (!CGAL::coplanar(a, b, c, point(v))) return false;
     return true;
   };
-  for_each_edge(t.uses, [&](Uses first, Uses last) {
+  for_each_edge(t.uses, [&](EdgeUses first, EdgeUses last) {
     if (last - first != 2) return;
     const EdgeUse& u = first[0];
     const EdgeUse& w = first[1];
@@ -175,9 +143,9 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       out.line_origins.push_back(origin);
     }
     auto line_of = [&](std::uint32_t a, std::uint32_t b) {
-      const std::uint64_t key = detail::edge_key(a, b);
+      const std::uint64_t key = edge_key(a, b);
       auto it = std::lower_bound(topo.uses.begin(), topo.uses.end(), key,
-                                 [](const detail::EdgeUse& u, std::uint64_t k) { return u.key < k; });
+                                 [](const EdgeUse& u, std::uint64_t k) { return u.key < k; });
       return edge_line[static_cast<std::size_t>(it - topo.uses.begin())];
     };
 
@@ -197,6 +165,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     for (std::uint32_t f = 0; f < nf; ++f) {
       if (facing[f] == 0) {
         ++out.stats.edge_on_faces_removed;
+        out.edge_on_faces.push_back({mi, f});
       } else if (facing[f] < 0 && options.remove_back_faces && topo.closed_component[f]) {
         ++out.stats.back_faces_removed;
       } else {

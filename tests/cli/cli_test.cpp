@@ -695,3 +695,143 @@ TEST_F(CliSurfaces, BadMeshesAndOutputsGiveOneLineAndNoFile) {
 }
 
 }  // namespace
+
+// ---- hlr draw -------------------------------------------------------------------------------------
+namespace {
+
+class CliDraw : public CliClip {
+ protected:
+  // A failed draw of `mesh` into `output`: exit `code`, one line on stderr starting with `prefix`,
+  // and nothing in the output directory.
+  void expect_failure(const std::vector<std::string>& args, int code, const std::string& prefix) const {
+    std::vector<std::string> all{"draw"};
+    all.insert(all.end(), args.begin(), args.end());
+    Outcome run = hlr(all);
+    SCOPED_TRACE(::testing::PrintToString(args));
+    EXPECT_EQ(run.exit_code, code) << run.err;
+    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+    EXPECT_EQ(run.err.rfind(prefix, 0), 0u) << run.err;
+    EXPECT_TRUE(entries(dir_ / "out").empty()) << run.err;
+  }
+};
+
+TEST_F(CliDraw, DrawsTheBundledBracketIntoSvgDxfAndJson) {
+  const std::string mesh = (kScenes / "l_bracket.off").string();
+  Outcome run = hlr({"draw", mesh, "--view", "iso", "-o", out("b.svg").string(), "-o", out("b.dxf").string(), "-o",
+                     out("b.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  const json doc = json::parse(slurp(out("b.json")));
+  EXPECT_EQ(doc.at("format"), "hlr-lines/1");
+  EXPECT_EQ(doc.at("view").at("direction"), json({-1, 1, -1}));
+  EXPECT_EQ(doc.at("input").at("files").at(0), mesh);
+  std::size_t visible = 0, hidden = 0;
+  for (const auto& line : doc.at("lines")) {
+    ++(line.at("visible").get<bool>() ? visible : hidden);
+    EXPECT_EQ(line.at("a").size(), 3u);
+    EXPECT_TRUE(line.at("edge").is_array()) << line;  // the bracket has no penetrations
+    const std::string kind = line.at("kind");
+    EXPECT_TRUE(kind == "silhouette" || kind == "crease") << kind;
+  }
+  EXPECT_GT(visible, 0u);
+  EXPECT_GT(hidden, 0u);  // the inner corner and the back edges
+  const std::string svg = slurp(out("b.svg"));
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("mm\""), std::string::npos);
+  EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);
+  const std::string dxf = slurp(out("b.dxf"));
+  EXPECT_NE(dxf.find("AC1015"), std::string::npos);
+  EXPECT_NE(dxf.find("LWPOLYLINE"), std::string::npos);
+  EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"b.dxf", "b.json", "b.svg"}));
+}
+
+TEST_F(CliDraw, ViewsAndOptionsWork) {
+  const std::string mesh = (kScenes / "penetrating_boxes.off").string();
+  for (const char* view : {"front", "back", "top", "bottom", "left", "right", "iso"}) {
+    Outcome run = hlr({"draw", mesh, "--view", view, "-o", out("p.svg").string()});
+    EXPECT_EQ(run.exit_code, 0) << view << ": " << run.err;
+  }
+  Outcome run = hlr({"draw", mesh, "--dir", "1,2,-3", "--crease", "60", "--sheet", "a3", "--scale", "1:2", "-o",
+                     out("p.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  bool intersection = false;
+  const json doc = json::parse(slurp(out("p.json")));
+  for (const auto& line : doc.at("lines"))
+    if (line.at("kind") == "intersection") {
+      intersection = true;
+      EXPECT_TRUE(line.at("edge").is_null());
+    }
+  EXPECT_TRUE(intersection) << "the bar penetrates the cube";
+}
+
+TEST_F(CliDraw, HiddenNoneDrawsNoDashedLineButKeepsThemInJson) {
+  const std::string mesh = (kScenes / "l_bracket.off").string();
+  Outcome run = hlr({"draw", mesh, "--hidden", "none", "-o", out("b.svg").string(), "-o", out("b.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(slurp(out("b.svg")).find("stroke-dasharray"), std::string::npos);
+  bool hidden = false;
+  const json doc = json::parse(slurp(out("b.json")));
+  for (const auto& line : doc.at("lines")) hidden |= !line.at("visible").get<bool>();
+  EXPECT_TRUE(hidden);
+}
+
+TEST_F(CliDraw, HelpShowsAnExample) {
+  Outcome run = hlr({"draw", "--help"});
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.out.find("hlr draw fixtures/scenes/l_bracket.off"), std::string::npos) << run.out;
+}
+
+TEST_F(CliDraw, BadOptionsAreUsageErrors) {
+  const std::string mesh = (kScenes / "cube.off").string();
+  const std::string o = out("c.svg").string();
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"--view", "sideways"}, {"--dir", "0,0,0"}, {"--dir", "0,0,1", "--up", "0,0,-2"},
+        {"--sheet", "B9"}, {"--scale", "0"}, {"--scale", "1:0"}, {"--scale", "half"}, {"--crease", "200"},
+        {"--hidden", "dotted"}}) {
+    std::vector<std::string> args{mesh, "-o", o};
+    args.insert(args.end(), bad.begin(), bad.end());
+    expect_failure(args, 2, "");
+  }
+}
+
+TEST_F(CliDraw, BadMeshesAndOutputsGiveOneLineAndNoFile) {
+  const std::string cube = (kScenes / "cube.off").string();
+  const std::vector<std::pair<std::string, std::string>> meshes{
+      {"truncated.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n"},
+      {"empty.off", ""},
+      {"nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"},
+      {"huge.off", "OFF\n3 1 0\n0 0 0\n1e300 0 0\n0 1 0\n3 0 1 2\n"},
+      {"index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"},
+      {"flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n"},  // no face left
+      {"garbage.obj", "v 0 0 0\nv 1 0\nf 1 2 3\n"},
+      {"short.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"},
+      {"mesh.xyz", "0 0 0\n"},
+  };
+  for (const auto& [name, text] : meshes) {
+    const std::string path = write_input(name, text).string();
+    expect_failure({path, "-o", out("m.svg").string()}, 1, "hlr: " + path + ": ");
+  }
+  expect_failure({in("missing.off").string(), "-o", out("m.svg").string()}, 1, "hlr: " + in("missing.off").string());
+  expect_failure({dir_.string(), "-o", out("m.svg").string()}, 1, "hlr: " + dir_.string());
+  // Outputs: unknown extension, missing directory, a directory; a bad second output keeps the first
+  // from being written too.
+  for (const std::string& bad : {out("x.txt").string(), (dir_ / "no" / "dir" / "x.svg").string(), (dir_ / "out").string()})
+    expect_failure({cube, "-o", out("good.svg").string(), "-o", bad}, 1, "hlr: " + bad + ": ");
+}
+
+TEST_F(CliDraw, NonManifoldMeshIsDrawnWithAWarning) {
+  // Three triangles on one edge.
+  const std::string fin =
+      write_input("fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n").string();
+  Outcome run = hlr({"draw", fin, "-o", out("f.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("warning"), std::string::npos) << run.err;
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+  bool shared_edge = false;
+  const json doc = json::parse(slurp(out("f.json")));
+  for (const auto& line : doc.at("lines"))
+    shared_edge |= line.at("edge") == json({0, 1}) && line.at("kind") == "crease";
+  EXPECT_TRUE(shared_edge) << "the non-manifold edge is a crease";
+}
+
+}  // namespace

@@ -21,6 +21,7 @@
 #include <hlr/kernel/scene.hpp>
 #include <hlr/kernel/view.hpp>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -64,6 +65,7 @@ struct Sources {
   std::vector<SourcePolygon<K>> polygons;
   clip::LineTable<K> lines;
   std::vector<LineOrigin> line_origins;  // parallel to lines
+  std::vector<std::array<std::uint32_t, 2>> edge_on_faces;  // (mesh, face) of the faces dropped edge-on
   SourceStats stats;
 };
 

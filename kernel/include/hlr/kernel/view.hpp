@@ -90,8 +90,10 @@ class ViewFrame {
     }
   }
 
-  ViewPoint<K> to_view(const Vec3& p) const {
-    const FT q[3] = {FT(p[0]), FT(p[1]), FT(p[2])};
+  ViewPoint<K> to_view(const Vec3& p) const { return to_view(FT(p[0]), FT(p[1]), FT(p[2])); }
+  // A model-space point given in the kernel's number type (a constructed point, on ExactKernel).
+  ViewPoint<K> to_view(const FT& px, const FT& py, const FT& pz) const {
+    const FT q[3] = {px, py, pz};
     return {dot(x_, q), dot(y_, q), dot(z_, q)};
   }
 

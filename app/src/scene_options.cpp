@@ -1,0 +1,71 @@
+#include "scene_options.hpp"
+
+#include "subcommand.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <iostream>
+
+namespace hlr::app {
+
+void add_scene_options(CLI::App& cmd, SceneOptions& options) {
+  cmd.add_option("meshes", options.meshes, "mesh files (OFF, OBJ, STL, PLY), drawn together as one scene")
+      ->required()
+      ->type_name("MESH...");
+  auto* view = cmd.add_option("--view", options.view, std::string("named view: ") + named_view_list)
+                   ->capture_default_str()
+                   ->type_name("NAME");
+  auto* dir = cmd.add_option("--dir", options.direction, "look direction instead of a named view")
+                  ->delimiter(',')
+                  ->expected(3)
+                  ->type_name("X,Y,Z");
+  dir->excludes(view);
+  cmd.add_option("--up", options.up, "up vector for --dir (default +Z, or +Y when looking along Z)")
+      ->delimiter(',')
+      ->expected(3)
+      ->needs(dir)
+      ->type_name("X,Y,Z");
+  add_kernel_option(cmd, options.kernel);
+}
+
+std::optional<View> resolve_view(const SceneOptions& options) {
+  View view;
+  if (!options.direction.empty()) {
+    view.name = "custom";
+    view.direction = {options.direction[0], options.direction[1], options.direction[2]};
+    view.up = options.up.empty() ? Vec3{0, 0, 1} : Vec3{options.up[0], options.up[1], options.up[2]};
+    // The default up is +Z (CAD convention); looking straight along Z, take +Y instead.
+    if (options.up.empty() && view.direction[0] == 0 && view.direction[1] == 0) view.up = {0, 1, 0};
+  } else if (!named_view(options.view, view)) {
+    std::cerr << "hlr: --view: unknown view \"" << options.view << "\" (use " << named_view_list << ", or --dir X,Y,Z)"
+              << std::endl;
+    return std::nullopt;
+  }
+  if (auto defect = view_defect(view)) {
+    std::cerr << "hlr: " << (options.direction.empty() ? "--view" : "--dir/--up") << ": " << *defect << std::endl;
+    return std::nullopt;
+  }
+  return view;
+}
+
+Scene load_scene(const std::vector<std::string>& paths) {
+  Scene scene;
+  for (const auto& path : paths) {
+    ImportReport report;
+    scene.meshes.push_back(load_mesh(path, report));
+    for (const auto& w : report.warnings) std::cerr << "hlr: warning: " << w << '\n';
+    scene.input.files.push_back(path);
+    scene.input.faces += scene.meshes.back().faces.size();
+    scene.input.vertices += scene.meshes.back().vertices.size();
+  }
+  return scene;
+}
+
+bool has_extension(const std::string& path, const std::string& extension) {
+  if (path.size() <= extension.size()) return false;
+  return std::equal(extension.begin(), extension.end(), path.end() - extension.size(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+  });
+}
+
+}  // namespace hlr::app

@@ -1,0 +1,115 @@
+// hlr export, lines: a hidden-line drawing as a document.
+//
+//   make_drawing  rounds a LineSet (and its drawing segments) to the orthonormal view frame in
+//                 model units: the one place where the exact result is rounded.
+//   lines_json    the hlr-lines/1 contract (DESIGN.md, docs/FORMATS.md): every piece, visible and
+//                 hidden, with its kind and mesh edge.
+//   lines_svg     a drawing on a sheet, in millimetres: visible lines continuous wide, hidden lines
+//                 dashed narrow (ISO 128, docs/FORMATS.md), ISO 128 precedence applied.
+//   lines_dxf     the same drawing as DXF R2000 in model units (millimetres), layers VISIBLE and
+//                 HIDDEN, a dashed linetype defined in the file, polylines as LWPOLYLINE.
+//
+// Writers return the document; the caller writes it to disk (atomically).
+#pragma once
+
+#include <hlr/export/surfaces.hpp>
+#include <hlr/hidden_line/lines.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hlr::exporter {
+
+using Point2 = std::array<double, 2>;
+using Point3 = std::array<double, 3>;
+
+// One piece of hlr-lines/1: view coordinates in model units.
+struct DrawingPiece {
+  Point3 a, b;
+  bool visible = true;
+  FeatureKind kind = FeatureKind::boundary;
+  std::uint32_t mesh = 0;
+  bool has_edge = false;  // false for intersection lines (JSON "edge": null)
+  std::array<std::uint32_t, 2> edge{};
+};
+
+// A segment the drawing shows, after precedence (in model units).
+struct DrawingSegment {
+  Point2 a, b;
+  bool visible = true;
+};
+
+struct ViewInfo {
+  std::string name;  // "front", ..., "custom"
+  Point3 direction{}, up{};
+  std::array<std::array<double, 4>, 4> world_to_view{};
+};
+
+struct LineDrawing {
+  InputInfo input;
+  ViewInfo view;
+  KernelKind kernel = KernelKind::exact;
+  std::vector<DrawingPiece> pieces;      // JSON: every piece
+  std::vector<DrawingSegment> segments;  // SVG and DXF
+  hidden_line::LineStats stats;
+  double crease_degrees = 30;
+  StageTimes times;
+  // Total image-plane length of `segments` (what a drawing shows), visible and hidden, model units.
+  double visible_length() const { return length(true); }
+  double hidden_length() const { return length(false); }
+
+ private:
+  double length(bool visible) const;
+};
+
+template <class K>
+LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, KernelKind kernel,
+                         const hidden_line::LineSet<K>& lines,
+                         const std::vector<hidden_line::DrawnSegment<K>>& segments);
+
+// Sheet sizes after ISO 216, landscape.
+struct Sheet {
+  std::string name;  // "A4"
+  double width_mm = 297, height_mm = 210;
+};
+// A0..A4 by name (any letter case); nothing for an unknown name.
+std::optional<Sheet> sheet_by_name(const std::string& name);
+
+struct DrawingStyle {
+  Sheet sheet;
+  std::optional<double> scale;  // drawing mm per model unit; none: the largest ISO 5455 scale that fits
+  bool hidden = true;           // draw hidden lines (dashed); false: visible lines only
+};
+
+// The scale a drawing is made at: style.scale, or the largest ISO 5455 scale (1:1, 1:2, 1:5, ...,
+// 2:1, 5:1, ...) at which the drawing fits the sheet's drawing area.
+double drawing_scale(const LineDrawing& drawing, const DrawingStyle& style);
+
+// Drawing segments of one class joined end to end: segments whose endpoints are equal doubles are
+// joined through every point where exactly two segments of that class meet (the exact engine makes
+// shared endpoints identical, so no tolerance). Visible chains first, then hidden ones, each in
+// the order of their first segment in the input; a closed loop has `closed` set and does not
+// repeat its first point.
+struct DrawingPolyline {
+  std::vector<Point2> points;
+  bool closed = false;
+  bool visible = true;
+};
+std::vector<DrawingPolyline> chain_segments(const std::vector<DrawingSegment>& segments);
+
+std::string lines_json(const LineDrawing& drawing);
+std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style);
+std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style);
+
+#define HLR_EXPORT_LINES_DECLARE(K, EXTERN)                                                              \
+  EXTERN template LineDrawing make_drawing<K>(const InputInfo&, const ViewFrame<K>&, KernelKind,         \
+                                              const hidden_line::LineSet<K>&,                            \
+                                              const std::vector<hidden_line::DrawnSegment<K>>&);
+
+HLR_EXPORT_LINES_DECLARE(ExactKernel, extern)
+HLR_EXPORT_LINES_DECLARE(EpickKernel, extern)
+HLR_EXPORT_LINES_DECLARE(DoubleKernel, extern)
+
+}  // namespace hlr::exporter

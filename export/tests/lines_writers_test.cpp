@@ -1,0 +1,588 @@
+// Tests of the kernel-independent line writers (export/src/lines_writers.cpp) on small hand-made
+// LineDrawings: sheets and scales, chaining, and the JSON, SVG and DXF documents. The SVG is read
+// back with expat, the DXF with dxflib's reader.
+//
+// `export_tests --write-samples DIR` writes sample drawings instead of running the tests; CTest's
+// export_samples_check runs tests/tools/check_drawing.py (ezdxf, rsvg-convert) on them.
+#include <hlr/export/lines.hpp>
+
+#include <dl_creationadapter.h>
+#include <dl_dxf.h>
+#include <expat.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace {
+
+using namespace hlr;
+using namespace hlr::exporter;
+using nlohmann::json;
+
+DrawingSegment seg(Point2 a, Point2 b, bool visible = true) { return {a, b, visible}; }
+
+// A drawing made of `segments` only (pieces follow them, at z = 0, as creases).
+LineDrawing drawing_of(std::vector<DrawingSegment> segments) {
+  LineDrawing d;
+  d.input.files = {"fixtures/part.off"};
+  d.input.faces = 12;
+  d.input.vertices = 8;
+  d.view.name = "front";
+  d.view.direction = {0, 1, 0};
+  d.view.up = {0, 0, 1};
+  d.view.world_to_view = {{{1, 0, 0, 0}, {0, 0, 1, 0}, {0, -1, 0, 0}, {0, 0, 0, 1}}};
+  std::uint32_t v = 0;
+  for (const auto& s : segments) {
+    DrawingPiece p;
+    p.a = {s.a[0], s.a[1], 0};
+    p.b = {s.b[0], s.b[1], 0};
+    p.visible = s.visible;
+    p.kind = FeatureKind::crease;
+    p.has_edge = true;
+    p.edge = {v, v + 1};
+    v += 2;
+    d.pieces.push_back(p);
+  }
+  d.segments = std::move(segments);
+  return d;
+}
+
+// A closed polygon as segments.
+std::vector<DrawingSegment> loop(const std::vector<Point2>& points, bool visible = true) {
+  std::vector<DrawingSegment> out;
+  for (std::size_t i = 0; i < points.size(); ++i) out.push_back(seg(points[i], points[(i + 1) % points.size()], visible));
+  return out;
+}
+
+DrawingStyle a4() { return DrawingStyle{*sheet_by_name("A4"), std::nullopt, true}; }
+
+// --------------------------------------------------------------------------------------------
+// Sheets and scales.
+
+TEST(Sheets, IsoA0ToA4LandscapeInAnyCase) {
+  ASSERT_TRUE(sheet_by_name("A4"));
+  EXPECT_EQ(sheet_by_name("a4")->name, "A4");
+  EXPECT_EQ(sheet_by_name("a4")->width_mm, 297);
+  EXPECT_EQ(sheet_by_name("a4")->height_mm, 210);
+  EXPECT_EQ(sheet_by_name("A3")->width_mm, 420);
+  EXPECT_EQ(sheet_by_name("A3")->height_mm, 297);
+  EXPECT_EQ(sheet_by_name("a2")->width_mm, 594);
+  EXPECT_EQ(sheet_by_name("A1")->width_mm, 841);
+  EXPECT_EQ(sheet_by_name("A0")->width_mm, 1189);
+  EXPECT_EQ(sheet_by_name("A0")->height_mm, 841);
+  EXPECT_FALSE(sheet_by_name("A5"));
+  EXPECT_FALSE(sheet_by_name("letter"));
+  EXPECT_FALSE(sheet_by_name(""));
+}
+
+// A4's drawing area is 257 mm x 160 mm (frame 20/10/10/10, a 20 mm title strip, 5 mm clearance).
+TEST(DrawingScale, PicksTheLargestIsoScaleThatFits) {
+  auto box = [](double w, double h) { return drawing_of(loop({{0, 0}, {w, 0}, {w, h}, {0, h}})); };
+  EXPECT_EQ(drawing_scale(box(1000, 100), a4()), 0.2);    // 1:2 gives 500 mm; 1:5 gives 200 mm
+  EXPECT_EQ(drawing_scale(box(100, 50), a4()), 2.0);      // 2:1 gives 200 x 100
+  EXPECT_EQ(drawing_scale(box(200, 100), a4()), 1.0);
+  EXPECT_EQ(drawing_scale(box(100, 100), a4()), 1.0);     // height decides: 2:1 would be 200 > 160
+  EXPECT_EQ(drawing_scale(box(10, 5), a4()), 20.0);
+  EXPECT_EQ(drawing_scale(box(0.5, 0.1), a4()), 500.0);
+  EXPECT_EQ(drawing_scale(box(3000, 10), a4()), 0.05);    // 1:20
+  EXPECT_EQ(drawing_scale(box(1285, 10), a4()), 0.2);     // exactly 257 mm at 1:5
+  EXPECT_EQ(drawing_scale(box(1285.001, 10), a4()), 0.1);
+  EXPECT_EQ(drawing_scale(box(2e6, 10), a4()), 1e-4);     // 1:10000
+  EXPECT_EQ(drawing_scale(box(1000, 100), DrawingStyle{*sheet_by_name("A0"), std::nullopt, true}), 1.0);
+}
+
+TEST(DrawingScale, GivenScaleEmptyDrawingAndHiddenLinesLeftOut) {
+  auto d = drawing_of(loop({{0, 0}, {100, 0}, {100, 50}, {0, 50}}));
+  DrawingStyle style = a4();
+  style.scale = 0.5;
+  EXPECT_EQ(drawing_scale(d, style), 0.5);
+  EXPECT_EQ(drawing_scale(LineDrawing{}, a4()), 1.0);
+  // One segment along x: its height is zero, the width decides.
+  EXPECT_EQ(drawing_scale(drawing_of({seg({0, 0}, {100, 0})}), a4()), 2.0);
+  // A hidden line far out counts only when hidden lines are drawn.
+  d.segments.push_back(seg({0, 0}, {1000, 0}, false));
+  EXPECT_EQ(drawing_scale(d, a4()), 0.2);
+  style = a4();
+  style.hidden = false;
+  EXPECT_EQ(drawing_scale(d, style), 2.0);
+}
+
+// --------------------------------------------------------------------------------------------
+// Chaining.
+
+TEST(Chaining, OpenChainThroughDegreeTwoPoints) {
+  // Out of order and in mixed directions.
+  const auto chains = chain_segments({seg({1, 0}, {2, 0}), seg({0, 0}, {1, 0}), seg({2, 1}, {2, 0})});
+  ASSERT_EQ(chains.size(), 1u);
+  EXPECT_FALSE(chains[0].closed);
+  EXPECT_TRUE(chains[0].visible);
+  EXPECT_EQ(chains[0].points, (std::vector<Point2>{{0, 0}, {1, 0}, {2, 0}, {2, 1}}));
+}
+
+TEST(Chaining, ClosedLoop) {
+  const auto chains =
+      chain_segments({seg({0, 0}, {1, 0}), seg({1, 1}, {1, 0}), seg({0, 1}, {1, 1}), seg({0, 1}, {0, 0})});
+  ASSERT_EQ(chains.size(), 1u);
+  EXPECT_TRUE(chains[0].closed);
+  EXPECT_EQ(chains[0].points, (std::vector<Point2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}));
+}
+
+TEST(Chaining, TJunctionStaysSplit) {
+  const auto chains = chain_segments({seg({0, 0}, {1, 0}), seg({1, 0}, {2, 0}), seg({1, 0}, {1, 1})});
+  ASSERT_EQ(chains.size(), 3u);
+  for (const auto& c : chains) {
+    EXPECT_EQ(c.points.size(), 2u);
+    EXPECT_FALSE(c.closed);
+  }
+  EXPECT_EQ(chains[0].points, (std::vector<Point2>{{0, 0}, {1, 0}}));  // in input order
+  EXPECT_EQ(chains[2].points, (std::vector<Point2>{{1, 0}, {1, 1}}));
+}
+
+TEST(Chaining, ClassesAreNeverJoined) {
+  const auto chains = chain_segments({seg({1, 0}, {2, 0}, false), seg({0, 0}, {1, 0}, true), seg({2, 0}, {3, 0}, false)});
+  ASSERT_EQ(chains.size(), 2u);
+  EXPECT_TRUE(chains[0].visible);  // visible chains first
+  EXPECT_EQ(chains[0].points, (std::vector<Point2>{{0, 0}, {1, 0}}));
+  EXPECT_FALSE(chains[1].visible);
+  EXPECT_EQ(chains[1].points, (std::vector<Point2>{{1, 0}, {2, 0}, {3, 0}}));
+}
+
+TEST(Chaining, EqualDoublesOnlyNoTolerance) {
+  const double almost_one = std::nextafter(1.0, 2.0);
+  const auto chains = chain_segments({seg({0, 0}, {1, 0}), seg({almost_one, 0}, {2, 0})});
+  EXPECT_EQ(chains.size(), 2u);
+  // -0.0 and 0.0 are equal doubles: joined.
+  EXPECT_EQ(chain_segments({seg({-1, 0}, {-0.0, 0}), seg({0.0, 0}, {1, 0})}).size(), 1u);
+}
+
+TEST(Chaining, LoopWithATailIsNotClosedAndPointsAreSkipped) {
+  // A triangle whose corner (0,0) also has a tail: (0,0) has three segments, so no join there.
+  const auto chains = chain_segments(
+      {seg({0, 0}, {1, 0}), seg({1, 0}, {0, 1}), seg({0, 1}, {0, 0}), seg({0, 0}, {-1, 0}), seg({5, 5}, {5, 5})});
+  ASSERT_EQ(chains.size(), 2u);
+  EXPECT_FALSE(chains[0].closed);
+  EXPECT_EQ(chains[0].points, (std::vector<Point2>{{0, 0}, {1, 0}, {0, 1}, {0, 0}}));
+  EXPECT_EQ(chains[1].points, (std::vector<Point2>{{0, 0}, {-1, 0}}));
+}
+
+TEST(Chaining, Deterministic) {
+  auto segments = loop({{0, 0}, {4, 0}, {4, 3}, {0, 3}});
+  const auto more = loop({{1, 1}, {2, 1}, {2, 2}}, false);
+  segments.insert(segments.end(), more.begin(), more.end());
+  segments.push_back(seg({4, 0}, {6, 0}));
+  const auto first = chain_segments(segments);
+  for (int i = 0; i < 3; ++i) {
+    const auto again = chain_segments(segments);
+    ASSERT_EQ(again.size(), first.size());
+    for (std::size_t c = 0; c < first.size(); ++c) {
+      EXPECT_EQ(again[c].points, first[c].points);
+      EXPECT_EQ(again[c].closed, first[c].closed);
+    }
+  }
+}
+
+// --------------------------------------------------------------------------------------------
+// JSON.
+
+TEST(LinesJson, FieldByField) {
+  LineDrawing d = drawing_of({seg({0.1, 0.2}, {1.0 / 3, 2})});
+  d.kernel = KernelKind::exact;
+  d.crease_degrees = 45;
+  d.times.read = 0.5;
+  d.times.sources = 0.25;
+  d.times.sort = 0.125;
+  d.times.lines = 0.375;
+  d.times.total = 1.5;
+  d.pieces[0].a = {0.1, 0.2, -0.3};
+  d.pieces[0].b = {1.0 / 3, 2, 1e-300};
+  d.pieces[0].edge = {3, 7};
+  DrawingPiece cut;  // an intersection line: no mesh edge
+  cut.a = {0, 0, 0};
+  cut.b = {1, 0, 0};
+  cut.visible = false;
+  cut.kind = FeatureKind::intersection;
+  cut.mesh = 1;
+  cut.has_edge = true;  // even so, "edge" is null
+  d.pieces.push_back(cut);
+  d.stats.lines = 2;
+  d.stats.by_kind[static_cast<int>(FeatureKind::crease)] = 1;
+  d.stats.by_kind[static_cast<int>(FeatureKind::intersection)] = 1;
+  d.stats.point_in_view = 3;
+  d.stats.visible_pieces = 1;
+  d.stats.hidden_pieces = 1;
+
+  const json j = json::parse(lines_json(d));
+  EXPECT_EQ(j["format"], "hlr-lines/1");
+  EXPECT_EQ(j["input"], json({{"files", {"fixtures/part.off"}}, {"faces", 12}, {"vertices", 8}}));
+  EXPECT_EQ(j["view"]["projection"], "orthographic");
+  EXPECT_EQ(j["view"]["name"], "front");
+  EXPECT_EQ(j["view"]["direction"], json({0, 1, 0}));
+  EXPECT_EQ(j["view"]["up"], json({0, 0, 1}));
+  EXPECT_EQ(j["view"]["world_to_view"], json({{1, 0, 0, 0}, {0, 0, 1, 0}, {0, -1, 0, 0}, {0, 0, 0, 1}}));
+  EXPECT_EQ(j["view"].size(), 5u);
+
+  ASSERT_EQ(j["lines"].size(), 2u);
+  const json& crease = j["lines"][0];
+  EXPECT_EQ(crease.size(), 6u);
+  EXPECT_EQ(crease["a"].get<std::vector<double>>(), (std::vector<double>{0.1, 0.2, -0.3}));  // round trip
+  EXPECT_EQ(crease["b"].get<std::vector<double>>(), (std::vector<double>{1.0 / 3, 2, 1e-300}));
+  EXPECT_EQ(crease["visible"], true);
+  EXPECT_EQ(crease["kind"], "crease");
+  EXPECT_EQ(crease["mesh"], 0);
+  EXPECT_EQ(crease["edge"], json({3, 7}));
+  const json& intersection = j["lines"][1];
+  EXPECT_EQ(intersection["kind"], "intersection");
+  EXPECT_EQ(intersection["visible"], false);
+  EXPECT_EQ(intersection["mesh"], 1);
+  ASSERT_TRUE(intersection.contains("edge"));
+  EXPECT_TRUE(intersection["edge"].is_null());
+
+  const json& s = j["stats"];
+  EXPECT_EQ(s["seconds"], 1.5);
+  EXPECT_EQ(s["stage_seconds"], json({{"read", 0.5}, {"sources", 0.25}, {"sort", 0.125}, {"lines", 0.375}}));
+  EXPECT_EQ(s["lines"], 2);
+  EXPECT_EQ(s["lines_by_kind"],
+            json({{"silhouette", 0}, {"crease", 1}, {"boundary", 0}, {"intersection", 1}, {"group", 0}}));
+  EXPECT_EQ(s["lines_seen_end_on"], 3);
+  EXPECT_EQ(s["visible_pieces"], 1);
+  EXPECT_EQ(s["hidden_pieces"], 1);
+  EXPECT_EQ(s["kernel"], "exact");
+  EXPECT_EQ(s["crease_degrees"], 45);
+}
+
+TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {
+  LineDrawing d;
+  d.view.name = "custom";
+  d.view.direction = {1, 2, -3};
+  d.kernel = KernelKind::epick;
+  const json j = json::parse(lines_json(d));
+  EXPECT_FALSE(j["view"].contains("name"));
+  EXPECT_EQ(j["view"]["direction"], json({1, 2, -3}));
+  EXPECT_TRUE(j["lines"].is_array());
+  EXPECT_TRUE(j["lines"].empty());
+  EXPECT_EQ(j["stats"]["kernel"], "epick");
+}
+
+// --------------------------------------------------------------------------------------------
+// SVG, read back with expat.
+
+struct SvgElement {
+  std::string name;
+  std::map<std::string, std::string> attributes;
+  std::string group;  // id of the enclosing <g>, if any
+  std::string text;
+};
+
+struct SvgDocument {
+  bool well_formed = false;
+  std::string error;
+  std::vector<SvgElement> elements;
+  std::vector<std::size_t> open;  // stack of indices into elements
+
+  const SvgElement* find(const std::string& name, const std::string& id) const {
+    for (const auto& e : elements)
+      if (e.name == name && e.attributes.count("id") && e.attributes.at("id") == id) return &e;
+    return nullptr;
+  }
+  std::vector<const SvgElement*> in_group(const std::string& name, const std::string& group) const {
+    std::vector<const SvgElement*> out;
+    for (const auto& e : elements)
+      if (e.name == name && e.group == group) out.push_back(&e);
+    return out;
+  }
+  std::ptrdiff_t position(const std::string& name, const std::string& id) const {
+    const SvgElement* e = find(name, id);
+    return e ? e - elements.data() : -1;
+  }
+};
+
+SvgDocument parse_svg(const std::string& text) {
+  SvgDocument doc;
+  XML_Parser parser = XML_ParserCreate("UTF-8");
+  XML_SetUserData(parser, &doc);
+  XML_SetElementHandler(
+      parser,
+      [](void* data, const XML_Char* name, const XML_Char** attributes) {
+        auto& d = *static_cast<SvgDocument*>(data);
+        SvgElement e;
+        e.name = name;
+        for (int i = 0; attributes[i]; i += 2) e.attributes[attributes[i]] = attributes[i + 1];
+        for (auto it = d.open.rbegin(); it != d.open.rend(); ++it)
+          if (d.elements[*it].name == "g") {
+            e.group = d.elements[*it].attributes["id"];
+            break;
+          }
+        d.open.push_back(d.elements.size());
+        d.elements.push_back(std::move(e));
+      },
+      [](void* data, const XML_Char*) { static_cast<SvgDocument*>(data)->open.pop_back(); });
+  XML_SetCharacterDataHandler(parser, [](void* data, const XML_Char* s, int len) {
+    auto& d = *static_cast<SvgDocument*>(data);
+    if (!d.open.empty()) d.elements[d.open.back()].text.append(s, len);
+  });
+  doc.well_formed = XML_Parse(parser, text.data(), static_cast<int>(text.size()), 1) == XML_STATUS_OK;
+  if (!doc.well_formed) doc.error = XML_ErrorString(XML_GetErrorCode(parser));
+  XML_ParserFree(parser);
+  return doc;
+}
+
+LineDrawing box_with_hidden_hole() {
+  auto segments = loop({{0, 0}, {100, 0}, {100, 50}, {0, 50}});
+  segments.push_back(seg({40, 0}, {40, 50}, false));
+  segments.push_back(seg({60, 0}, {60, 50}, false));
+  return drawing_of(segments);
+}
+
+TEST(LinesSvg, SheetGroupsAndIsoLineTypes) {
+  const std::string svg = lines_svg(box_with_hidden_hole(), a4());
+  const SvgDocument doc = parse_svg(svg);
+  ASSERT_TRUE(doc.well_formed) << doc.error << "\n" << svg;
+  const SvgElement& root = doc.elements.at(0);
+  EXPECT_EQ(root.name, "svg");
+  EXPECT_EQ(root.attributes.at("xmlns"), "http://www.w3.org/2000/svg");
+  EXPECT_EQ(root.attributes.at("version"), "1.1");
+  EXPECT_EQ(root.attributes.at("width"), "297mm");
+  EXPECT_EQ(root.attributes.at("height"), "210mm");
+  EXPECT_EQ(root.attributes.at("viewBox"), "0 0 297 210");
+
+  const SvgElement* visible = doc.find("g", "visible");
+  const SvgElement* hidden = doc.find("g", "hidden");
+  ASSERT_TRUE(visible && hidden);
+  EXPECT_EQ(visible->attributes.at("stroke-width"), "0.5");
+  EXPECT_EQ(visible->attributes.count("stroke-dasharray"), 0u);
+  EXPECT_EQ(hidden->attributes.at("stroke-width"), "0.25");
+  EXPECT_EQ(hidden->attributes.at("stroke-dasharray"), "3 0.75");
+  for (const SvgElement* g : {visible, hidden}) {
+    EXPECT_EQ(g->attributes.at("stroke-linecap"), "butt");
+    EXPECT_EQ(g->attributes.at("stroke-linejoin"), "round");
+    EXPECT_EQ(g->attributes.at("fill"), "none");
+  }
+  EXPECT_LT(doc.position("g", "hidden"), doc.position("g", "visible"));  // hidden lines below
+  EXPECT_EQ(doc.in_group("path", "visible").size(), 1u);  // the outline, one closed path
+  EXPECT_EQ(doc.in_group("path", "hidden").size(), 2u);
+  EXPECT_TRUE(doc.find("g", "frame"));
+  EXPECT_TRUE(doc.find("g", "title-block"));
+}
+
+TEST(LinesSvg, CentredAtScaleWithViewYUp) {
+  // 100 x 50 at 2:1 on A4, centred in the drawing area x 25..282, y 15..175 (centre 153.5, 95).
+  const SvgDocument doc = parse_svg(lines_svg(box_with_hidden_hole(), a4()));
+  const auto outline = doc.in_group("path", "visible");
+  ASSERT_EQ(outline.size(), 1u);
+  EXPECT_EQ(outline[0]->attributes.at("d"), "M53.5 145L253.5 145L253.5 45L53.5 45Z");
+  EXPECT_EQ(doc.in_group("path", "hidden")[0]->attributes.at("d"), "M133.5 145L133.5 45");
+}
+
+TEST(LinesSvg, TitleBlockNamesFilesViewScaleAndProgram) {
+  LineDrawing d = box_with_hidden_hole();
+  d.input.files = {"/some/dir/a&b.off", "c.stl"};
+  const SvgDocument doc = parse_svg(lines_svg(d, a4()));
+  ASSERT_TRUE(doc.well_formed) << doc.error;
+  std::vector<std::string> texts;
+  for (const auto* t : doc.in_group("text", "title-text")) texts.push_back(t->text);
+  EXPECT_NE(std::find(texts.begin(), texts.end(), "a&b.off, c.stl"), texts.end());
+  EXPECT_NE(std::find(texts.begin(), texts.end(), "front"), texts.end());
+  EXPECT_NE(std::find(texts.begin(), texts.end(), "2:1"), texts.end());
+  EXPECT_NE(std::find(texts.begin(), texts.end(), "hlr"), texts.end());
+
+  // A reduction scale reads 1:n.
+  const SvgDocument big = parse_svg(lines_svg(drawing_of(loop({{0, 0}, {1000, 0}, {1000, 100}, {0, 100}})), a4()));
+  texts.clear();
+  for (const auto* t : big.in_group("text", "title-text")) texts.push_back(t->text);
+  EXPECT_NE(std::find(texts.begin(), texts.end(), "1:5"), texts.end());
+}
+
+TEST(LinesSvg, HiddenNoneLeavesHiddenLinesOut) {
+  DrawingStyle style = a4();
+  style.hidden = false;
+  const SvgDocument doc = parse_svg(lines_svg(box_with_hidden_hole(), style));
+  ASSERT_TRUE(doc.well_formed);
+  EXPECT_FALSE(doc.find("g", "hidden"));
+  EXPECT_EQ(doc.in_group("path", "visible").size(), 1u);
+}
+
+TEST(LinesSvg, EmptyDrawingIsAnEmptySheet) {
+  const SvgDocument doc = parse_svg(lines_svg(LineDrawing{}, a4()));
+  ASSERT_TRUE(doc.well_formed) << doc.error;
+  EXPECT_TRUE(doc.in_group("path", "visible").empty());
+}
+
+// --------------------------------------------------------------------------------------------
+// DXF, read back with dxflib.
+
+struct DxfReadBack : DL_CreationAdapter {
+  struct Polyline {
+    std::string layer, linetype;
+    int flags = 0;
+    std::vector<Point2> points;
+  };
+  std::map<std::string, DL_LayerData> layers;
+  std::map<std::string, std::string> layer_linetype;
+  std::map<std::string, int> layer_color, layer_lineweight;
+  std::map<std::string, std::vector<double>> linetype_dashes;
+  std::vector<double> pending_dashes;
+  std::vector<Polyline> polylines;
+  std::map<std::string, double> doubles;
+  std::map<std::string, int> ints;
+
+  void addLayer(const DL_LayerData& data) override {
+    layers.emplace(data.name, data);
+    layer_linetype[data.name] = getAttributes().getLinetype();
+    layer_color[data.name] = getAttributes().getColor();
+    layer_lineweight[data.name] = getAttributes().getWidth();
+  }
+  // dxflib reports a linetype's dashes (group 49) as it reads them, the linetype at its end.
+  void addLinetypeDash(double length) override { pending_dashes.push_back(length); }
+  void addLinetype(const DL_LinetypeData& data) override {
+    linetype_dashes[data.name] = pending_dashes;
+    pending_dashes.clear();
+  }
+  void addPolyline(const DL_PolylineData& data) override {
+    polylines.push_back({getAttributes().getLayer(), getAttributes().getLinetype(), data.flags, {}});
+  }
+  void addVertex(const DL_VertexData& data) override { polylines.back().points.push_back({data.x, data.y}); }
+  void setVariableDouble(const std::string& key, double value, int) override { doubles[key] = value; }
+  void setVariableInt(const std::string& key, int value, int) override { ints[key] = value; }
+};
+
+DxfReadBack read_dxf(const std::string& text) {
+  DxfReadBack back;
+  std::stringstream in(text);
+  DL_Dxf dxf;
+  EXPECT_TRUE(dxf.in(in, &back));
+  return back;
+}
+
+TEST(LinesDxf, LayersLinetypeAndPolylines) {
+  LineDrawing d = box_with_hidden_hole();
+  d.segments.push_back(seg({0.1, 1.0 / 3}, {-7.25, 1e-9}, false));  // numbers that must round-trip
+  const std::string text = lines_dxf(d, a4());
+  EXPECT_NE(text.find("AC1015"), std::string::npos);
+  const DxfReadBack back = read_dxf(text);
+
+  ASSERT_TRUE(back.layers.count("VISIBLE") && back.layers.count("HIDDEN") && back.layers.count("0"));
+  EXPECT_EQ(back.layer_linetype.at("VISIBLE"), "CONTINUOUS");
+  EXPECT_EQ(back.layer_lineweight.at("VISIBLE"), 50);
+  EXPECT_EQ(back.layer_linetype.at("HIDDEN"), "HIDDEN");
+  EXPECT_EQ(back.layer_lineweight.at("HIDDEN"), 25);
+  ASSERT_TRUE(back.linetype_dashes.count("HIDDEN"));
+  EXPECT_EQ(back.linetype_dashes.at("HIDDEN"), (std::vector<double>{3.0, -0.75}));
+
+  EXPECT_EQ(back.ints.at("$INSUNITS"), 4);
+  EXPECT_EQ(back.ints.at("$MEASUREMENT"), 1);
+  EXPECT_EQ(back.doubles.at("$LTSCALE"), 0.5);  // drawn at 2:1
+
+  // The outline as one closed LWPOLYLINE on VISIBLE, in model units; hidden lines on HIDDEN,
+  // written first.
+  std::vector<const DxfReadBack::Polyline*> visible, hidden;
+  for (const auto& p : back.polylines) (p.layer == "VISIBLE" ? visible : hidden).push_back(&p);
+  ASSERT_EQ(visible.size(), 1u);
+  EXPECT_EQ(visible[0]->flags & 1, 1);
+  EXPECT_EQ(visible[0]->points, (std::vector<Point2>{{0, 0}, {100, 0}, {100, 50}, {0, 50}}));
+  EXPECT_EQ(visible[0]->linetype, "BYLAYER");
+  ASSERT_EQ(hidden.size(), 3u);
+  for (const auto* p : hidden) {
+    EXPECT_EQ(p->layer, "HIDDEN");
+    EXPECT_EQ(p->flags & 1, 0);
+  }
+  EXPECT_EQ(hidden[2]->points, (std::vector<Point2>{{0.1, 1.0 / 3}, {-7.25, 1e-9}}));
+  EXPECT_EQ(back.polylines[0].layer, "HIDDEN");
+  EXPECT_NE(text.find("LWPOLYLINE"), std::string::npos);
+}
+
+TEST(LinesDxf, HiddenNoneKeepsTheLayerDropsTheEntities) {
+  DrawingStyle style = a4();
+  style.hidden = false;
+  const DxfReadBack back = read_dxf(lines_dxf(box_with_hidden_hole(), style));
+  EXPECT_TRUE(back.layers.count("HIDDEN"));
+  ASSERT_EQ(back.polylines.size(), 1u);
+  EXPECT_EQ(back.polylines[0].layer, "VISIBLE");
+}
+
+TEST(LinesDxf, LtscaleIsOneOverTheScaleAndHandseedIsFree) {
+  // 1000 mm wide: 1:5 on A4, so the 3 mm dash is 15 model units long.
+  const std::string text = lines_dxf(drawing_of(loop({{0, 0}, {1000, 0}, {1000, 100}, {0, 100}})), a4());
+  const DxfReadBack back = read_dxf(text);
+  EXPECT_EQ(back.doubles.at("$LTSCALE"), 5.0);
+
+  // Every handle (group 5 outside the HEADER, 105 for DIMSTYLE) is unique and below $HANDSEED.
+  std::istringstream in(text);
+  std::string code, value;
+  unsigned long seed = 0;
+  std::map<unsigned long, int> seen;
+  bool after_seed = false;
+  while (std::getline(in, code) && std::getline(in, value)) {
+    const int gc = std::stoi(code);
+    if (gc == 9) after_seed = value == "$HANDSEED";
+    else if (after_seed && gc == 5) seed = std::stoul(value, nullptr, 16), after_seed = false;
+    else if (gc == 5 || gc == 105) ++seen[std::stoul(value, nullptr, 16)];
+  }
+  ASSERT_GT(seed, 0u);
+  ASSERT_FALSE(seen.empty());
+  for (const auto& [handle, count] : seen) {
+    EXPECT_EQ(count, 1) << std::hex << handle;
+    EXPECT_LT(handle, seed) << std::hex << handle;
+  }
+}
+
+// --------------------------------------------------------------------------------------------
+// Samples for tests/tools/check_drawing.py.
+
+// An L-shaped part in a front view: visible outline and a visible hole, a hidden slot and a
+// hidden through hole, and an intersection line.
+LineDrawing sample_bracket() {
+  auto segments = loop({{0, 0}, {80, 0}, {80, 10}, {10, 10}, {10, 60}, {0, 60}});
+  std::vector<Point2> circle;
+  for (int i = 0; i < 32; ++i)
+    circle.push_back({5 + 3 * std::cos(i * M_PI / 16), 45 + 3 * std::sin(i * M_PI / 16)});
+  const auto hole = loop(circle);
+  segments.insert(segments.end(), hole.begin(), hole.end());
+  for (double x : {35.0, 45.0}) segments.push_back(seg({x, 0}, {x, 10}, false));
+  const auto slot = loop({{55, 2}, {70, 2}, {70, 8}, {55, 8}}, false);
+  segments.insert(segments.end(), slot.begin(), slot.end());
+  LineDrawing d = drawing_of(segments);
+  d.input.files = {"fixtures/scenes/l_bracket.off"};
+  d.pieces.back().kind = FeatureKind::intersection;
+  d.pieces.back().has_edge = false;
+  d.kernel = KernelKind::exact;
+  return d;
+}
+
+int write_samples(const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name, std::ios::binary) << text;
+  };
+  const DrawingStyle a4_style = a4();
+  DrawingStyle visible_only = a4_style;
+  visible_only.hidden = false;
+  const LineDrawing bracket = sample_bracket();
+  write("bracket.svg", lines_svg(bracket, a4_style));
+  write("bracket.dxf", lines_dxf(bracket, a4_style));
+  write("bracket.json", lines_json(bracket));
+  write("bracket_visible_only.svg", lines_svg(bracket, visible_only));
+  write("bracket_visible_only.dxf", lines_dxf(bracket, visible_only));
+  const LineDrawing big = drawing_of(loop({{0, 0}, {1000, 0}, {1000, 100}, {0, 100}}));
+  write("big_a3.svg", lines_svg(big, DrawingStyle{*sheet_by_name("A3"), std::nullopt, true}));
+  write("big_a3.dxf", lines_dxf(big, DrawingStyle{*sheet_by_name("A3"), std::nullopt, true}));
+  write("empty.svg", lines_svg(LineDrawing{}, a4_style));
+  write("empty.dxf", lines_dxf(LineDrawing{}, a4_style));
+  write("empty.json", lines_json(LineDrawing{}));
+  std::cout << "wrote samples to " << dir << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::strcmp(argv[1], "--write-samples") == 0) return write_samples(argv[2]);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}

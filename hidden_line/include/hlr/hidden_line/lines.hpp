@@ -1,0 +1,100 @@
+// hlr hidden_line, lines: the feature lines of a view split into visible and hidden pieces.
+//
+// intersection_lines finds where faces penetrate each other, in model space and exactly: the
+// segments along which the relative interiors of two faces in different planes cross (pieces over
+// the faces of one coplanar group are joined). They do not depend on the view.
+//
+// classify_lines splits every feature edge (kernel/features.hpp) and every intersection segment
+// into visible and hidden pieces against the VisibilityMap. A point of a line is hidden when a face
+// is strictly nearer at its image position (DESIGN.md "What is visible"; faces are closed sets,
+// and faces seen edge-on count too). Split points are the line's crossings with the support lines
+// of visible fragments' edges, and the points where the line passes through an occluder's plane:
+// each is constructed from input data only (DESIGN.md rule 3). The pieces of a line cover it
+// exactly once, and consecutive pieces differ in visibility.
+//
+// drawing_segments applies ISO 128 precedence for drawings: where pieces coincide in the image,
+// the visible one is drawn and a hidden one is not; coincident pieces of one class are drawn once.
+#pragma once
+
+#include <hlr/hidden_line/visibility.hpp>
+#include <hlr/kernel/features.hpp>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace hlr::hidden_line {
+
+// A penetration segment in model space, exact.
+struct IntersectionSegment {
+  using Point3 = CGAL::Exact_predicates_exact_constructions_kernel::Point_3;
+  Point3 a, b;
+  std::uint32_t mesh_a = 0, mesh_b = 0;
+  std::vector<std::uint32_t> faces_a, faces_b;  // the faces of each side the segment crosses
+};
+
+std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes);
+
+template <class K>
+struct LinePiece {
+  typename Geometry<K>::FT t0, t1;  // along the line: a + t (b - a), 0 <= t0 < t1 <= 1
+  bool visible = true;
+};
+
+// One feature edge or intersection segment, with its pieces.
+template <class K>
+struct FeatureLine {
+  ViewPoint<K> a, b;  // view coordinates, unnormalized frame (exact on ExactKernel)
+  FeatureKind kind = FeatureKind::boundary;
+  std::uint32_t mesh = 0;
+  std::uint32_t v0 = 0, v1 = 0;  // the mesh edge's input vertices; unused for intersections
+  std::vector<LinePiece<K>> pieces;  // empty when the line projects to a point
+};
+
+struct LineStats {
+  std::size_t lines = 0;                 // feature edges plus intersection segments
+  std::size_t by_kind[5] = {};           // indexed by FeatureKind
+  std::size_t point_in_view = 0;         // lines seen end-on (no pieces)
+  std::size_t visible_pieces = 0, hidden_pieces = 0;
+};
+
+template <class K>
+struct LineSet {
+  std::vector<FeatureLine<K>> lines;
+  LineStats stats;
+};
+
+struct LineOptions {
+  FeatureOptions features;
+  bool intersections = true;
+};
+
+// `sources` and `map` must come from build_sources and area_sort of the same meshes and frame,
+// with back faces removed or not (either is correct).
+template <class K>
+LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
+                          const VisibilityMap<K>& map, const std::vector<IntersectionSegment>& intersections,
+                          const LineOptions& options = {});
+
+// A segment of the drawing in the image plane (unnormalized view frame).
+template <class K>
+struct DrawnSegment {
+  typename Geometry<K>::Point a, b;
+  bool visible = true;
+};
+
+template <class K>
+std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines);
+
+#define HLR_HIDDEN_LINE_LINES_DECLARE(K, EXTERN)                                                         \
+  EXTERN template LineSet<K> classify_lines<K>(const std::vector<Mesh>&, const ViewFrame<K>&, const Sources<K>&, \
+                                              const VisibilityMap<K>&, const std::vector<IntersectionSegment>&, \
+                                              const LineOptions&);                                           \
+  EXTERN template std::vector<DrawnSegment<K>> drawing_segments<K>(const LineSet<K>&);
+
+HLR_HIDDEN_LINE_LINES_DECLARE(ExactKernel, extern)
+HLR_HIDDEN_LINE_LINES_DECLARE(EpickKernel, extern)
+HLR_HIDDEN_LINE_LINES_DECLARE(DoubleKernel, extern)
+
+}  // namespace hlr::hidden_line

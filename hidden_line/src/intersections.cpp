@@ -1,0 +1,201 @@
+// intersection_lines (hlr/hidden_line/lines.hpp): where faces penetrate, in model space, exactly.
+//
+// Candidate pairs come from CGAL's box intersection on the faces' 3D bounding boxes. A pair can only
+// cross when each face has corners strictly on both sides of the other's plane (exact orientation
+// predicates on the input doubles), which rejects neighbours that merely share an edge or a corner
+// and faces that only touch. For the rest, the line where the two planes meet is intersected with
+// the relative interior of each face in the face's own plane (projected along the normal's largest
+// axis), and the two interval sets, measured with one parameter along the line, are intersected.
+#include "sources_impl.hpp"
+
+#include <hlr/hidden_line/lines.hpp>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <map>
+#include <tuple>
+
+namespace hlr::hidden_line {
+namespace {
+
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using IK = CGAL::Exact_predicates_inexact_constructions_kernel;  // predicates on input doubles only
+using FT = EK::FT;
+
+struct FaceRef {
+  std::uint32_t mesh, face;
+};
+
+struct Interval {
+  FT lo, hi;
+};
+
+// The open intervals of parameters t for which p + t d lies in the relative interior of the face,
+// with intervals that meet at a point joined (the line runs on through a corner or along a
+// internal boundary point of the face).
+std::vector<Interval> interior_intervals(const Mesh& mesh, const std::vector<std::uint32_t>& face,
+                                         const EK::Vector_3& normal, const EK::Point_3& p, const EK::Vector_3& d) {
+  // Drop the axis of the normal's largest component: the projection is one-to-one on the plane.
+  int drop = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(CGAL::to_double(normal[k])) > std::abs(CGAL::to_double(normal[drop]))) drop = k;
+  if (CGAL::is_zero(normal[drop]))
+    for (int k = 0; k < 3; ++k)
+      if (!CGAL::is_zero(normal[k])) drop = k;
+  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+  auto project = [&](const EK::Point_3& q) { return EK::Point_2(q[u], q[v]); };
+  std::vector<EK::Point_2> poly;
+  for (std::uint32_t vi : face) {
+    const auto& c = mesh.vertices[vi];
+    poly.push_back(project(EK::Point_3(c[0], c[1], c[2])));
+  }
+  const EK::Point_2 l0 = project(p), l1 = project(p + d);
+  // The parameter of a point on the line, read off a coordinate in which the line moves.
+  const bool along_u = !CGAL::is_zero(l1.x() - l0.x());
+  auto param = [&](const EK::Point_2& q) {
+    return along_u ? (q.x() - l0.x()) / (l1.x() - l0.x()) : (q.y() - l0.y()) / (l1.y() - l0.y());
+  };
+  std::vector<FT> ts;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const EK::Point_2 &a = poly[i], &b = poly[(i + 1) % n];
+    const auto oa = CGAL::orientation(l0, l1, a), ob = CGAL::orientation(l0, l1, b);
+    if (oa == CGAL::COLLINEAR) ts.push_back(param(a));
+    else if (ob != CGAL::COLLINEAR && oa != ob) {
+      // t where the line meets the edge's line: cross(a - l0, b - a) / cross(l1 - l0, b - a).
+      const EK::Vector_2 e = b - a, w = l1 - l0, r = a - l0;
+      ts.push_back((r.x() * e.y() - r.y() * e.x()) / (w.x() * e.y() - w.y() * e.x()));
+    }
+  }
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+  std::vector<Interval> out;
+  for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
+    const FT mid = (ts[i] + ts[i + 1]) / 2;
+    const EK::Point_2 m(l0.x() + mid * (l1.x() - l0.x()), l0.y() + mid * (l1.y() - l0.y()));
+    if (CGAL::bounded_side_2(poly.begin(), poly.end(), m, EK()) != CGAL::ON_BOUNDED_SIDE) continue;
+    if (!out.empty() && out.back().hi == ts[i]) out.back().hi = ts[i + 1];
+    else out.push_back({ts[i], ts[i + 1]});
+  }
+  return out;
+}
+
+EK::Point_3 input_point(const Mesh& mesh, std::uint32_t v) {
+  const auto& c = mesh.vertices[v];
+  return EK::Point_3(c[0], c[1], c[2]);
+}
+
+// Whether the face has corners strictly on both sides of the plane through a, b, c.
+bool straddles(const Mesh& mesh, const std::vector<std::uint32_t>& face, const IK::Point_3& a, const IK::Point_3& b,
+               const IK::Point_3& c) {
+  bool below = false, above = false;
+  for (std::uint32_t v : face) {
+    const auto& q = mesh.vertices[v];
+    const auto o = CGAL::orientation(a, b, c, IK::Point_3(q[0], q[1], q[2]));
+    below |= o == CGAL::NEGATIVE;
+    above |= o == CGAL::POSITIVE;
+  }
+  return below && above;
+}
+
+}  // namespace
+
+std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes) {
+  std::vector<detail::MeshTopology> topo;
+  for (const Mesh& m : meshes) topo.push_back(detail::analyse_mesh(m));
+
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  std::vector<FaceRef> faces;
+  std::vector<Box> boxes;
+  for (std::uint32_t mi = 0; mi < meshes.size(); ++mi) {
+    for (std::uint32_t f = 0; f < meshes[mi].faces.size(); ++f) {
+      double lo[3], hi[3];
+      for (int k = 0; k < 3; ++k) lo[k] = hi[k] = meshes[mi].vertices[meshes[mi].faces[f][0]][k];
+      for (std::uint32_t v : meshes[mi].faces[f])
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], meshes[mi].vertices[v][k]);
+          hi[k] = std::max(hi[k], meshes[mi].vertices[v][k]);
+        }
+      boxes.emplace_back(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), faces.size());
+      faces.push_back({mi, f});
+    }
+  }
+
+  auto ipoint = [&](const FaceRef& r, int k) {
+    const auto& c = meshes[r.mesh].vertices[topo[r.mesh].plane_vertices[r.face][k]];
+    return IK::Point_3(c[0], c[1], c[2]);
+  };
+  auto crosses = [&](const FaceRef& f, const FaceRef& g) {
+    return straddles(meshes[g.mesh], meshes[g.mesh].faces[g.face], ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)) &&
+           straddles(meshes[f.mesh], meshes[f.mesh].faces[f.face], ipoint(g, 0), ipoint(g, 1), ipoint(g, 2));
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
+    const std::size_t i = std::min(x.info(), y.info()), j = std::max(x.info(), y.info());
+    if (crosses(faces[i], faces[j])) pairs.emplace_back(i, j);
+  });
+  std::sort(pairs.begin(), pairs.end());
+
+  // Pieces of one pair of coplanar groups lie on one line; they are joined below.
+  using GroupPair = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>;
+  struct Piece {
+    EK::Point_3 a, b;  // a < b lexicographically
+    std::uint32_t face_a, face_b;
+  };
+  std::map<GroupPair, std::vector<Piece>> pieces;
+  auto plane_of = [&](const FaceRef& r) {
+    const auto& pv = topo[r.mesh].plane_vertices[r.face];
+    const Mesh& m = meshes[r.mesh];
+    return EK::Plane_3(input_point(m, pv[0]), input_point(m, pv[1]), input_point(m, pv[2]));
+  };
+  for (const auto& [i, j] : pairs) {
+    FaceRef f = faces[i], g = faces[j];
+    // One key per pair of groups, whichever face came first.
+    if (std::pair(g.mesh, topo[g.mesh].coplanar_group[g.face]) < std::pair(f.mesh, topo[f.mesh].coplanar_group[f.face]))
+      std::swap(f, g);
+    const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);
+    const auto meet = CGAL::intersection(pf, pg);
+    if (!meet) continue;
+    const EK::Line_3* line = boost::get<EK::Line_3>(&*meet);  // CGAL 5: boost::variant
+    if (!line) continue;
+    const EK::Point_3 p = line->point();
+    const EK::Vector_3 d = line->to_vector();
+    const auto in_f = interior_intervals(meshes[f.mesh], meshes[f.mesh].faces[f.face], pf.orthogonal_vector(), p, d);
+    const auto in_g = interior_intervals(meshes[g.mesh], meshes[g.mesh].faces[g.face], pg.orthogonal_vector(), p, d);
+    const GroupPair key{f.mesh, topo[f.mesh].coplanar_group[f.face], g.mesh, topo[g.mesh].coplanar_group[g.face]};
+    for (const Interval& x : in_f)
+      for (const Interval& y : in_g) {
+        const FT lo = CGAL::max(x.lo, y.lo), hi = CGAL::min(x.hi, y.hi);
+        if (!(lo < hi)) continue;
+        EK::Point_3 a = p + lo * d, b = p + hi * d;
+        if (CGAL::compare_xyz(b, a) == CGAL::SMALLER) std::swap(a, b);
+        pieces[key].push_back({a, b, f.face, g.face});
+      }
+  }
+
+  // Join the pieces of each group pair where they meet or overlap (points along one line are
+  // ordered lexicographically).
+  std::vector<IntersectionSegment> out;
+  for (auto& [key, list] : pieces) {
+    std::sort(list.begin(), list.end(),
+              [](const Piece& x, const Piece& y) { return CGAL::compare_xyz(x.a, y.a) == CGAL::SMALLER; });
+    for (std::size_t k = 0; k < list.size();) {
+      IntersectionSegment s{list[k].a, list[k].b, std::get<0>(key), std::get<2>(key), {list[k].face_a}, {list[k].face_b}};
+      for (++k; k < list.size() && CGAL::compare_xyz(list[k].a, s.b) != CGAL::LARGER; ++k) {
+        if (CGAL::compare_xyz(list[k].b, s.b) == CGAL::LARGER) s.b = list[k].b;
+        s.faces_a.push_back(list[k].face_a);
+        s.faces_b.push_back(list[k].face_b);
+      }
+      for (auto* fs : {&s.faces_a, &s.faces_b}) {
+        std::sort(fs->begin(), fs->end());
+        fs->erase(std::unique(fs->begin(), fs->end()), fs->end());
+      }
+      out.push_back(std::move(s));
+    }
+  }
+  return out;
+}
+
+}  // namespace hlr::hidden_line

@@ -1,0 +1,44 @@
+// hlr kernel, feature edges: the mesh edges a drawing shows (DESIGN.md "Feature lines").
+//
+// An edge (two cyclically consecutive vertices of a face, unordered) is a feature edge when it is
+//   - boundary: it has one face;
+//   - crease: it has more than two faces (non-manifold), or two faces whose dihedral angle, the
+//     angle between their normals once the two are oriented alike, is above the crease threshold;
+//   - silhouette: it has two faces and one faces the viewer while the other does not (back-facing
+//     or seen edge-on);
+//   - group: two faces of different face groups (materials, OBJ groups, face colours).
+// An edge that is several of these takes the first in the order silhouette, crease, group.
+// The internal edges of a tessellated planar face are none of these (their dihedral angle is 0).
+//
+// Everything is decided exactly on the input doubles (CGAL Epeck), so the same edges are found
+// on every kernel. The threshold is the one parameter taken as given: its cosine, rounded to
+// double, is compared exactly with the cosine of each dihedral angle.
+#pragma once
+
+#include <hlr/kernel/scene.hpp>
+#include <hlr/kernel/view.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace hlr {
+
+enum class FeatureKind : std::uint8_t { silhouette, crease, boundary, intersection, group };
+
+// The hlr-lines/1 name of a kind.
+const char* feature_kind_name(FeatureKind kind);
+
+struct FeatureEdge {
+  std::uint32_t v0 = 0, v1 = 0;       // input vertex indices, v0 < v1
+  FeatureKind kind = FeatureKind::boundary;
+  std::vector<std::uint32_t> faces;   // the faces using the edge (indices into mesh.faces)
+};
+
+struct FeatureOptions {
+  double crease_degrees = 30;  // in [0, 180]
+};
+
+// The feature edges of one mesh seen along `view`, in order of (v0, v1).
+std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const FeatureOptions& options = {});
+
+}  // namespace hlr

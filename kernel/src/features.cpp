@@ -1,0 +1,94 @@
+// Feature-edge extraction (hlr/kernel/features.hpp), exact on the input doubles.
+#include <hlr/kernel/features.hpp>
+#include <hlr/kernel/mesh_edges.hpp>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace hlr {
+namespace {
+
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+
+// The normal of a face from its first three non-collinear corners (faces are taken as planar;
+// degenerate faces were skipped on import, so such corners exist).
+EK::Vector_3 face_normal(const Mesh& mesh, const std::vector<std::uint32_t>& face) {
+  auto point = [&](std::uint32_t v) {
+    const auto& p = mesh.vertices[v];
+    return EK::Point_3(p[0], p[1], p[2]);
+  };
+  const EK::Point_3 a = point(face[0]), b = point(face[1]);
+  for (std::size_t k = 2; k < face.size(); ++k) {
+    const EK::Point_3 c = point(face[k]);
+    if (!CGAL::collinear(a, b, c)) return CGAL::cross_product(b - a, c - a);
+  }
+  return CGAL::cross_product(b - a, point(face[2]) - a);
+}
+
+// n1·n2 < c |n1| |n2|, decided exactly by squaring with the signs taken care of.
+bool angle_above(const EK::Vector_3& n1, const EK::Vector_3& n2, double cos_threshold) {
+  const EK::FT s = n1 * n2;
+  const EK::FT c(cos_threshold);
+  const EK::FT q = c * c * n1.squared_length() * n2.squared_length();
+  if (cos_threshold >= 0) return CGAL::is_negative(s) || s * s < q;
+  return CGAL::is_negative(s) && s * s > q;
+}
+
+}  // namespace
+
+const char* feature_kind_name(FeatureKind kind) {
+  switch (kind) {
+    case FeatureKind::silhouette: return "silhouette";
+    case FeatureKind::crease: return "crease";
+    case FeatureKind::boundary: return "boundary";
+    case FeatureKind::intersection: return "intersection";
+    case FeatureKind::group: return "group";
+  }
+  return "?";
+}
+
+std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const FeatureOptions& options) {
+  const double cos_threshold = std::cos(options.crease_degrees * std::numbers::pi / 180.0);
+  const EK::Vector_3 toward_viewer(-view.direction[0], -view.direction[1], -view.direction[2]);
+
+  std::vector<EK::Vector_3> normal(mesh.faces.size());
+  std::vector<int> facing(mesh.faces.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    normal[f] = face_normal(mesh, mesh.faces[f]);
+    facing[f] = CGAL::sign(normal[f] * toward_viewer);
+  }
+
+  std::vector<FeatureEdge> out;
+  for_each_edge(edge_uses(mesh), [&](EdgeUses first, EdgeUses last) {
+    FeatureEdge edge;
+    edge.v0 = edge_low(first->key);
+    edge.v1 = edge_high(first->key);
+    for (EdgeUses u = first; u != last; ++u) edge.faces.push_back(u->face);
+    const std::size_t n = edge.faces.size();
+    if (n == 1) {
+      edge.kind = FeatureKind::boundary;
+    } else if (n > 2) {
+      edge.kind = FeatureKind::crease;  // non-manifold
+    } else {
+      // Orient the two faces alike: faces that run the edge the same way disagree in orientation.
+      const std::uint32_t f = first[0].face, g = first[1].face;
+      const int flip = first[0].forward == first[1].forward ? -1 : 1;
+      const bool f_front = facing[f] > 0, g_front = flip * facing[g] > 0;
+      if (f_front != g_front) {
+        edge.kind = FeatureKind::silhouette;
+      } else if (angle_above(normal[f], flip > 0 ? normal[g] : -normal[g], cos_threshold)) {
+        edge.kind = FeatureKind::crease;
+      } else if (!mesh.face_group.empty() && mesh.face_group[f] != mesh.face_group[g]) {
+        edge.kind = FeatureKind::group;
+      } else {
+        return;
+      }
+    }
+    out.push_back(std::move(edge));
+  });
+  return out;
+}
+
+}  // namespace hlr

@@ -1,0 +1,170 @@
+#!/usr/bin/python3
+"""Checks hlr drawings with tools outside the project: check_drawing.py FILE...
+
+  .dxf   read by ezdxf (recover.readfile, then a strict readfile) and audited: any audit error fails
+         (ezdxf's own repairs, "fixes", are listed but pass); layers VISIBLE and HIDDEN must exist
+         and HIDDEN's linetype must be a dashed pattern defined in the file.
+  .svg   parsed with xml.etree (root <svg>, size in mm) and rendered with rsvg-convert to a
+         temporary PNG: a non-zero exit or an empty PNG fails.
+  .json  the keys and types of hlr-lines/1 (DESIGN.md "The JSON contract").
+
+One line per file, "ok" or "FAIL" first; exit status 0 only when every file passes.
+Run it with Debian's interpreter, /usr/bin/python3: python3-ezdxf belongs to it.
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+
+class CheckFailed(Exception):
+    pass
+
+
+def require(condition, message):
+    if not condition:
+        raise CheckFailed(message)
+
+
+def check_dxf(path):
+    try:
+        import ezdxf
+        from ezdxf import recover
+    except ImportError:
+        raise CheckFailed(f"ezdxf is not installed for {sys.executable} (apt-get install python3-ezdxf)")
+    try:
+        doc, auditor = recover.readfile(path)
+    except Exception as e:  # IOError, DXFStructureError, a decoding error...
+        raise CheckFailed(f"ezdxf cannot read it: {type(e).__name__}: {e}")
+    errors = [f"recover: {e.message}" for e in auditor.errors]
+    audit = doc.audit()
+    errors += [f"audit: {e.message}" for e in audit.errors]
+    require(not errors, f"{len(errors)} ezdxf error(s): " + "; ".join(errors))
+    try:
+        ezdxf.readfile(path)  # the strict reader must take it too
+    except Exception as e:
+        raise CheckFailed(f"ezdxf.readfile fails: {e}")
+    for name in ("VISIBLE", "HIDDEN"):
+        require(doc.layers.has_entry(name), f"layer {name} missing")
+    ltype = doc.layers.get("HIDDEN").dxf.linetype
+    require(doc.linetypes.has_entry(ltype), f"linetype {ltype} of layer HIDDEN is not defined in the file")
+    pattern = doc.linetypes.get(ltype).simplified_line_pattern()
+    require(len(pattern) >= 2 and any(x > 0 for x in pattern[1::2]),
+            f"linetype {ltype} of layer HIDDEN is not dashed (pattern {pattern})")
+    msp = doc.modelspace()
+    counts = {layer: len(msp.query(f'*[layer=="{layer}"]')) for layer in ("VISIBLE", "HIDDEN")}
+    fixes = len(auditor.fixes) + len(audit.fixes)
+    return (f"{counts['VISIBLE']} visible, {counts['HIDDEN']} hidden entities, HIDDEN dashed {pattern}, "
+            f"$LTSCALE {doc.header.get('$LTSCALE', 1)}, ezdxf audit: 0 errors, {fixes} fixes")
+
+
+def check_svg(path):
+    try:
+        root = ET.parse(path).getroot()
+    except ET.ParseError as e:
+        raise CheckFailed(f"not well-formed XML: {e}")
+    require(root.tag == "{http://www.w3.org/2000/svg}svg", f"root element is {root.tag}, not svg")
+    for attribute in ("width", "height"):
+        require(root.get(attribute, "").endswith("mm"), f"{attribute} is not in mm: {root.get(attribute)}")
+    rsvg = shutil.which("rsvg-convert")
+    require(rsvg is not None, "rsvg-convert is not installed (apt-get install librsvg2-bin)")
+    with tempfile.TemporaryDirectory() as tmp:
+        png = os.path.join(tmp, "render.png")
+        run = subprocess.run([rsvg, "--dpi-x", "96", "--dpi-y", "96", "-o", png, path],
+                             capture_output=True, text=True)
+        require(run.returncode == 0, f"rsvg-convert exits {run.returncode}: {run.stderr.strip()}")
+        require(os.path.exists(png) and os.path.getsize(png) > 0, "rsvg-convert wrote no PNG")
+        with open(png, "rb") as f:
+            require(f.read(8) == b"\x89PNG\r\n\x1a\n", "rsvg-convert output is not a PNG")
+        size = os.path.getsize(png)
+    paths = sum(1 for e in root.iter("{http://www.w3.org/2000/svg}path"))
+    return f"{root.get('width')} x {root.get('height')}, {paths} paths, rendered ({size} bytes PNG)"
+
+
+def is_number(x):
+    return isinstance(x, (int, float)) and not isinstance(x, bool)
+
+
+def is_count(x):
+    return isinstance(x, int) and not isinstance(x, bool) and x >= 0
+
+
+def is_vector(x, n):
+    return isinstance(x, list) and len(x) == n and all(is_number(v) for v in x)
+
+
+KINDS = {"silhouette", "crease", "boundary", "intersection", "group"}
+
+
+def check_json(path):
+    try:
+        with open(path, encoding="utf-8") as f:
+            doc = json.load(f)
+    except (OSError, ValueError) as e:
+        raise CheckFailed(f"not JSON: {e}")
+    require(isinstance(doc, dict) and doc.get("format") == "hlr-lines/1", "format is not hlr-lines/1")
+    inp = doc.get("input")
+    require(isinstance(inp, dict), "input missing")
+    require(isinstance(inp.get("files"), list) and all(isinstance(f, str) for f in inp["files"]),
+            "input.files is not a list of strings")
+    require(is_count(inp.get("faces")) and is_count(inp.get("vertices")), "input.faces/vertices are not counts")
+    view = doc.get("view")
+    require(isinstance(view, dict), "view missing")
+    require(view.get("projection") == "orthographic", "view.projection is not orthographic")
+    require("name" not in view or isinstance(view["name"], str), "view.name is not a string")
+    require(is_vector(view.get("direction"), 3) and is_vector(view.get("up"), 3), "view.direction/up are not 3-vectors")
+    matrix = view.get("world_to_view")
+    require(isinstance(matrix, list) and len(matrix) == 4 and all(is_vector(r, 4) for r in matrix),
+            "view.world_to_view is not a 4x4 matrix")
+    lines = doc.get("lines")
+    require(isinstance(lines, list), "lines is not a list")
+    for i, line in enumerate(lines):
+        where = f"lines[{i}]"
+        require(isinstance(line, dict), f"{where} is not an object")
+        require(is_vector(line.get("a"), 3) and is_vector(line.get("b"), 3), f"{where}.a/b are not 3-vectors")
+        require(isinstance(line.get("visible"), bool), f"{where}.visible is not a boolean")
+        require(line.get("kind") in KINDS, f"{where}.kind {line.get('kind')!r} is not a kind")
+        require(is_count(line.get("mesh")), f"{where}.mesh is not a count")
+        require("edge" in line, f"{where}.edge missing")
+        edge = line["edge"]
+        if line["kind"] == "intersection":
+            require(edge is None, f"{where}.edge of an intersection line is not null")
+        else:
+            require(isinstance(edge, list) and len(edge) == 2 and all(is_count(v) for v in edge),
+                    f"{where}.edge is not two vertex indices")
+    stats = doc.get("stats")
+    require(isinstance(stats, dict) and is_number(stats.get("seconds")), "stats.seconds missing")
+    stages = stats.get("stage_seconds")
+    require(isinstance(stages, dict) and all(is_number(stages.get(k)) for k in ("read", "sources", "sort", "lines")),
+            "stats.stage_seconds lacks read, sources, sort or lines")
+    require(isinstance(stats.get("kernel"), str), "stats.kernel is not a string")
+    require(is_number(stats.get("crease_degrees")), "stats.crease_degrees is not a number")
+    visible = sum(1 for line in lines if line["visible"])
+    return f"{len(lines)} lines ({visible} visible, {len(lines) - visible} hidden)"
+
+
+CHECKS = {".dxf": check_dxf, ".svg": check_svg, ".json": check_json}
+
+
+def main(argv):
+    if len(argv) < 2:
+        print(__doc__.strip().splitlines()[0], file=sys.stderr)
+        return 2
+    failed = 0
+    for path in argv[1:]:
+        check = CHECKS.get(os.path.splitext(path)[1].lower())
+        try:
+            require(check is not None, "unknown file type (expected .dxf, .svg or .json)")
+            require(os.path.isfile(path), "no such file")
+            print(f"ok   {path}: {check(path)}")
+        except CheckFailed as e:
+            failed += 1
+            print(f"FAIL {path}: {e}")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

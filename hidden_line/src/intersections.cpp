@@ -87,12 +87,15 @@ EK::Point_3 input_point(const Mesh& mesh, std::uint32_t v) {
   return EK::Point_3(c[0], c[1], c[2]);
 }
 
-// Whether the face has corners strictly on both sides of the plane through a, b, c.
-bool straddles(const Mesh& mesh, const std::vector<std::uint32_t>& face, const IK::Point_3& a, const IK::Point_3& b,
-               const IK::Point_3& c) {
+// Whether face g has corners strictly on both sides of the plane of face f. Corners g shares with f
+// (same mesh, same vertex) lie in f's plane: they are skipped rather than sent to the exact
+// fallback of the predicate, which is where neighbouring faces would spend their time.
+bool straddles(const Mesh& mesh_g, const std::vector<std::uint32_t>& g, const std::vector<std::uint32_t>* f_corners,
+               const IK::Point_3& a, const IK::Point_3& b, const IK::Point_3& c) {
   bool below = false, above = false;
-  for (std::uint32_t v : face) {
-    const auto& q = mesh.vertices[v];
+  for (std::uint32_t v : g) {
+    if (f_corners && std::find(f_corners->begin(), f_corners->end(), v) != f_corners->end()) continue;
+    const auto& q = mesh_g.vertices[v];
     const auto o = CGAL::orientation(a, b, c, IK::Point_3(q[0], q[1], q[2]));
     below |= o == CGAL::NEGATIVE;
     above |= o == CGAL::POSITIVE;
@@ -128,8 +131,13 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     return IK::Point_3(c[0], c[1], c[2]);
   };
   auto crosses = [&](const FaceRef& f, const FaceRef& g) {
-    return straddles(meshes[g.mesh], meshes[g.mesh].faces[g.face], ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)) &&
-           straddles(meshes[f.mesh], meshes[f.mesh].faces[f.face], ipoint(g, 0), ipoint(g, 1), ipoint(g, 2));
+    const auto& fc = meshes[f.mesh].faces[f.face];
+    const auto& gc = meshes[g.mesh].faces[g.face];
+    const bool same_mesh = f.mesh == g.mesh;
+    // Faces of one coplanar group never cross, and their corners would all be exact zeros.
+    if (same_mesh && topo[f.mesh].coplanar_group[f.face] == topo[g.mesh].coplanar_group[g.face]) return false;
+    return straddles(meshes[g.mesh], gc, same_mesh ? &fc : nullptr, ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)) &&
+           straddles(meshes[f.mesh], fc, same_mesh ? &gc : nullptr, ipoint(g, 0), ipoint(g, 1), ipoint(g, 2));
   };
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {

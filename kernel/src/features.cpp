@@ -12,19 +12,19 @@ namespace {
 
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 
-// The normal of a face from its first three non-collinear corners (faces are taken as planar;
-// degenerate faces were skipped on import, so such corners exist).
+// A face's normal, oriented by its corner order: twice its vector area, the sum of the fan
+// triangles' cross products from the first corner. Right for any planar simple polygon, convex or
+// not (three corners alone give the wrong side at a reflex corner).
 EK::Vector_3 face_normal(const Mesh& mesh, const std::vector<std::uint32_t>& face) {
   auto point = [&](std::uint32_t v) {
     const auto& p = mesh.vertices[v];
     return EK::Point_3(p[0], p[1], p[2]);
   };
-  const EK::Point_3 a = point(face[0]), b = point(face[1]);
-  for (std::size_t k = 2; k < face.size(); ++k) {
-    const EK::Point_3 c = point(face[k]);
-    if (!CGAL::collinear(a, b, c)) return CGAL::cross_product(b - a, c - a);
-  }
-  return CGAL::cross_product(b - a, point(face[2]) - a);
+  const EK::Point_3 origin = point(face[0]);
+  EK::Vector_3 sum = CGAL::cross_product(point(face[1]) - origin, point(face[2]) - origin);
+  for (std::size_t k = 3; k < face.size(); ++k)
+    sum = sum + CGAL::cross_product(point(face[k - 1]) - origin, point(face[k]) - origin);
+  return sum;
 }
 
 // n1·n2 < c |n1| |n2|, decided exactly by squaring with the signs taken care of.

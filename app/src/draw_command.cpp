@@ -94,9 +94,13 @@ int solve(const DrawOptions& options, const View& view, KernelKind kind, const e
     line_options.intersections = !options.no_intersections;
     const auto intersections = line_options.intersections ? hidden_line::intersection_lines(meshes)
                                                           : std::vector<hidden_line::IntersectionSegment>{};
+    times.intersections = seconds_since(mark);
+    mark = std::chrono::steady_clock::now();
     lines = hidden_line::classify_lines<K>(meshes, frame, sources, map, intersections, line_options);
-    segments = hidden_line::drawing_segments<K>(lines);
     times.lines = seconds_since(mark);
+    mark = std::chrono::steady_clock::now();
+    segments = hidden_line::drawing_segments<K>(lines);
+    times.precedence = seconds_since(mark);
   } catch (const clip::ClipError& e) {
     // Only the inexact kernels get here: their rounded decisions can contradict each other.
     throw UserError(options.scene.meshes.front(), std::string("the ") + kernel_name(kind) +

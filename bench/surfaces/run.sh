@@ -36,112 +36,45 @@
 #   HLR      hlr binary                          (default build/app/hlr)
 #   PYTHON   python for JSON/CSV work            (default /usr/bin/python3)
 #   OUT      CSV to write                        (default bench/surfaces/results/<UTC date>.csv)
-#   KEEP=DIR keep every hlr JSON/log and the peer's SVG/JSON/logs in DIR (default: a temp dir,
-#            removed at the end unless something failed)
+#   KEEP=DIR keep every hlr stats/log and the peer's SVG/JSON/logs in DIR (default: a temp dir,
+#            removed at the end unless something failed); hlr's JSON stays too with
+#            KEEP_HLR_JSON=1 (the last run's)
+# The option handling, the timed hlr runs and the peer run are shared with bench/draw/run.sh in
+# bench/common.sh and bench/common.py.
 # needs: a built hlr (build/app/hlr) and Blender (apt-get install -y blender).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
-cd "$root"
-
-views="${VIEWS:-front,top,right,iso}"
+source "$here/../common.sh"    # options, mesh list, work folder, hlr and peer runs; cd to the root
 kernels="${KERNELS:-exact,epick,double}"
-skip=",${SKIP:-},"
-repeat="${REPEAT:-5}"
-hlr_repeat="${HLR_REPEAT:-1}"
-threads="${THREADS:-1}"
-timeout_s="${TIMEOUT:-0}"
-hlr="${HLR:-$root/build/app/hlr}"
-py="${PYTHON:-/usr/bin/python3}"
-peer="$root/../shared/peers/blender_lineart/run.sh"
-scenes="$root/../shared/scenes"
 out="${OUT:-$here/results/$(date -u +%F).csv}"
 
-[ -x "$hlr" ] || { echo "no hlr binary at $hlr (build the project first)" >&2; exit 1; }
-[ -x "$py" ] || { echo "no python at $py" >&2; exit 1; }
-have_peer=1
-if [ ! -f "$peer" ]; then echo "peer script $peer absent: lineart_s will be \"failed\"" >&2; have_peer=0; fi
-if [ "$have_peer" = 1 ] && ! command -v blender >/dev/null; then
-  echo "blender not installed (apt-get install -y blender): lineart_s will be \"failed\"" >&2; have_peer=0
-fi
-
-meshes=()
-if [ $# -gt 0 ]; then
-  meshes=("$@")
-else
-  if [ ! -d "$scenes" ]; then echo "no scenes folder $scenes: nothing to do" >&2; exit 0; fi
-  shopt -s nullglob
-  meshes=("$scenes"/*.off)
-  shopt -u nullglob
-  [ ${#meshes[@]} -gt 0 ] || { echo "no .off meshes in $scenes: nothing to do" >&2; exit 0; }
-fi
-
-if [ -n "${KEEP:-}" ]; then work="$KEEP"; mkdir -p "$work"; keep=1; else work="$(mktemp -d)"; keep=0; fi
+bench_check
+bench_meshes "$@"
+bench_workdir
 mkdir -p "$(dirname "$out")"
-rows="$work/rows.tsv"          # mesh view kernel status json
-: >"$rows"
-any_fail=0
-
-echo "hlr: $hlr ($(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?'))"
-echo "peer: $([ "$have_peer" = 1 ] && blender -b --version 2>/dev/null | head -1 || echo absent), REPEAT=$repeat THREADS=$threads"
-echo "HLR_REPEAT=$hlr_repeat TIMEOUT=$timeout_s VIEWS=$views KERNELS=$kernels SKIP=${SKIP:-}"
-echo "work: $work"
+bench_banner "KERNELS=$kernels"
 
 for mesh in "${meshes[@]}"; do
   name="$(basename "${mesh%.*}")"
-  if [ ! -f "$mesh" ]; then echo "skip $name: $mesh absent" >&2; continue; fi
-  if [[ "$skip" == *",$name,"* ]]; then echo "skip $name (SKIP)"; continue; fi
+  if bench_skip "$name" "$mesh"; then continue; fi
   for view in ${views//,/ }; do
     for k in ${kernels//,/ }; do
-      base="$work/hlr_${name}_${view}_${k}"
-      cmd=("$hlr" surfaces "$mesh" --view "$view" --kernel "$k" -o "$base.json")
-      if [ "$timeout_s" != 0 ]; then cmd=(timeout "$timeout_s" "${cmd[@]}"); fi
-      : >"$base.stats"; status=ok
-      for ((r = 1; r <= hlr_repeat; r++)); do
-        rm -f "$base.json"
-        if "${cmd[@]}" >"$base.log" 2>&1 && [ -s "$base.json" ]; then
-          # keep only the stats, one JSON line per repeat (the polygons can be large)
-          "$py" -c 'import json, sys; print(json.dumps(json.load(open(sys.argv[1]))["stats"]))' \
-            "$base.json" >>"$base.stats"
-          rm -f "$base.json"
-        else
-          rc=$?; status=failed
-          echo "hlr $k failed on $name $view (exit $rc; log: $base.log)" >&2
-          if [ "$k" = exact ]; then any_fail=1; fi
-          break
-        fi
-      done
-      printf '%s\t%s\t%s\t%s\t%s\n' "$name" "$view" "$k" "$status" "$base.stats" >>"$rows"
+      bench_hlr "$name" "$view" "$k" "$work/hlr_${name}_${view}_${k}" \
+        surfaces "$mesh" --view "$view" --kernel "$k" \
+        || { if [ "$k" = exact ]; then any_fail=1; fi; }
     done
   done
-  if [ "$have_peer" = 1 ]; then
-    mkdir -p "$work/peer"
-    THREADS="$threads" REPEAT="$repeat" KEEP="$work/peer" bash "$peer" "$work/peer_${name}.csv" "$views" "$mesh" \
-      || { echo "peer run failed on $name" >&2; any_fail=1; }
-  fi
+  bench_peer "$mesh" "$name"
 done
 
-"$py" - "$rows" "$work" "$out" "$views" <<'EOF'
-import csv, glob, json, os, sys
+BENCH_DIR="$bench_dir" "$py" - "$rows" "$work" "$out" "$views" <<'EOF'
+import csv, os, sys
+sys.path.insert(0, os.environ["BENCH_DIR"])
+from common import load_hlr, load_peer, sec
 rows_tsv, work, out, views = sys.argv[1:5]
-hlr = {}     # (mesh, view) -> {kernel: stats or None}
-order = []
-for line in open(rows_tsv):
-    mesh, view, k, status, path = line.rstrip("\n").split("\t")
-    key = (mesh, view)
-    if key not in hlr:
-        hlr[key] = {}
-        order.append(key)
-    runs = [json.loads(l) for l in open(path) if l.strip()] if status == "ok" else []
-    hlr[key][k] = min(runs, key=lambda st: st["seconds"]) if runs else None
-peer = {}
-for p in glob.glob(os.path.join(work, "peer_*.csv")):
-    for r in csv.DictReader(open(p)):
-        peer[(r["mesh"], r["view"])] = r
-
-def sec(s):
-    return "%.6f" % s["seconds"] if s else "failed"
+order, hlr = load_hlr(rows_tsv)    # (mesh, view) -> {kernel: best stats or None}
+peer = load_peer(work)
 
 cols = ["mesh", "view", "faces", "sources", "hlr_exact_s", "hlr_epick_s", "hlr_double_s",
         "lineart_s", "ratio_exact_lineart"]
@@ -170,4 +103,4 @@ with open(out, "w", newline="") as f:
 print("\nwrote", out)
 EOF
 
-if [ "$keep" = 0 ] && [ "$any_fail" = 0 ]; then rm -rf "$work"; else echo "kept $work"; fi
+bench_done

@@ -354,7 +354,9 @@ std::string lines_json(const LineDrawing& drawing) {
   const StageTimes& t = drawing.times;
   out["stats"] = {
       {"seconds", t.total},
-      {"stage_seconds", {{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"lines", t.lines}}},
+      {"stage_seconds",
+       {{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"intersections", t.intersections},
+        {"lines", t.lines}, {"precedence", t.precedence}}},
       {"lines", s.lines},
       {"lines_by_kind", std::move(by_kind)},
       {"lines_seen_end_on", s.point_in_view},

@@ -246,7 +246,8 @@ TEST(LinesJson, FieldByField) {
 
   const json& s = j["stats"];
   EXPECT_EQ(s["seconds"], 1.5);
-  EXPECT_EQ(s["stage_seconds"], json({{"read", 0.5}, {"sources", 0.25}, {"sort", 0.125}, {"lines", 0.375}}));
+  EXPECT_EQ(s["stage_seconds"], json({{"read", 0.5}, {"sources", 0.25}, {"sort", 0.125}, {"intersections", 0.0},
+                                      {"lines", 0.375}, {"precedence", 0.0}}));
   EXPECT_EQ(s["lines"], 2);
   EXPECT_EQ(s["lines_by_kind"],
             json({{"silhouette", 0}, {"crease", 1}, {"boundary", 0}, {"intersection", 1}, {"group", 0}}));

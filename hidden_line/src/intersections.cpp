@@ -136,8 +136,21 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     const bool same_mesh = f.mesh == g.mesh;
     // Faces of one coplanar group never cross, and their corners would all be exact zeros.
     if (same_mesh && topo[f.mesh].coplanar_group[f.face] == topo[g.mesh].coplanar_group[g.face]) return false;
-    return straddles(meshes[g.mesh], gc, same_mesh ? &fc : nullptr, ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)) &&
-           straddles(meshes[f.mesh], fc, same_mesh ? &gc : nullptr, ipoint(g, 0), ipoint(g, 1), ipoint(g, 2));
+    if (!straddles(meshes[g.mesh], gc, same_mesh ? &fc : nullptr, ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)) ||
+        !straddles(meshes[f.mesh], fc, same_mesh ? &gc : nullptr, ipoint(g, 0), ipoint(g, 1), ipoint(g, 2)))
+      return false;
+    // Two triangles: the exact overlap test (predicates on the input points only) spares the
+    // constructions for the many curved-surface neighbours that straddle each other's planes but
+    // do not meet.
+    if (fc.size() == 3 && gc.size() == 3) {
+      auto corner = [&](const FaceRef& r, int k) {
+        const auto& c = meshes[r.mesh].vertices[meshes[r.mesh].faces[r.face][k]];
+        return IK::Point_3(c[0], c[1], c[2]);
+      };
+      return CGAL::do_intersect(IK::Triangle_3(corner(f, 0), corner(f, 1), corner(f, 2)),
+                                IK::Triangle_3(corner(g, 0), corner(g, 1), corner(g, 2)));
+    }
+    return true;
   };
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {

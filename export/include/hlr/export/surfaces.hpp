@@ -24,7 +24,8 @@ struct InputInfo {
 
 // Seconds per stage, reported in "stats".
 struct StageTimes {
-  double read = 0, sources = 0, sort = 0, lines = 0, total = 0;
+  double read = 0, sources = 0, sort = 0, total = 0;
+  double intersections = 0, lines = 0, precedence = 0;  // hlr draw: penetrations, classification, ISO 128 precedence
 };
 
 template <class K>

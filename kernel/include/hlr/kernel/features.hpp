@@ -8,6 +8,9 @@
 //     or seen edge-on);
 //   - group: two faces of different face groups (materials, OBJ groups, face colours).
 // An edge that is several of these takes the first in the order silhouette, crease, group.
+// A face's normal follows its corner order (its vector area). Two faces that run their edge in the
+// same direction are oriented alike by reversing the higher-numbered one; this matters when one of
+// them is seen edge-on (silhouette or not).
 // The internal edges of a tessellated planar face are none of these (their dihedral angle is 0).
 //
 // Everything is decided exactly on the input doubles (CGAL Epeck), so the same edges are found

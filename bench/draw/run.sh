@@ -1,0 +1,147 @@
+#!/usr/bin/env bash
+# hlr draw beside Blender's Line Art, on the shared scene meshes, in one run.
+#
+# usage (from anywhere; paths are relative to the repo root):
+#   bench/draw/run.sh [MESH.off...]
+#
+# With no MESH arguments it takes every *.off in ../shared/scenes/ (relative to the repo root);
+# if that folder is absent it says so and exits 0. For every mesh and view it runs
+#   hlr draw MESH --view V --kernel exact -o X.json
+# and the peer script ../shared/peers/blender_lineart/run.sh (Blender Line Art) on the same
+# mesh and views, then writes one CSV:
+#   bench/draw/results/<UTC date>.csv
+# columns: mesh, view, faces, feature_lines, hlr_s, hlr_lines_s, lineart_s, ratio,
+#          hlr_vis_len, hlr_hid_len, hlr_hid_len_all, lineart_vis_len, lineart_hid_len,
+#          vis_len_ratio, hid_len_ratio
+#   faces            stats/input faces of hlr's JSON (else the peer's)
+#   feature_lines    stats.lines: feature lines hlr found (silhouette, crease, boundary, group,
+#                    intersection), before splitting into visible and hidden pieces
+#   hlr_s            stats.seconds (total: read + sources + sort + lines; not writing the file),
+#                    minimum over HLR_REPEAT runs, or "failed" (non-zero exit or timeout)
+#   hlr_lines_s      stats.stage_seconds.lines of that run
+#   lineart_s        the peer's lineart_seconds (Line Art's own timer, minimum of REPEAT runs),
+#                    or "failed"
+#   ratio            hlr_s / lineart_s (> 1: hlr is slower), or "n/a"
+#   hlr_vis_len, hlr_hid_len
+#                    stats.drawn_visible_length / drawn_hidden_length: 2D length of what the
+#                    drawing shows after ISO 128 precedence (hidden under visible removed,
+#                    coincident duplicates once); model units, orthonormal view frame
+#   hlr_hid_len_all  2D length of ALL hidden pieces of the JSON "lines", before precedence
+#   lineart_vis_len, lineart_hid_len
+#                    the peer's vis_len / hid_len: 2D length of Line Art's visible (occlusion
+#                    level 0) and hidden (levels 1-128) strokes, in the camera's right/up frame,
+#                    world units (the same frame and scale as hlr's)
+#   vis_len_ratio    hlr_vis_len / lineart_vis_len; hid_len_ratio = hlr_hid_len / lineart_hid_len
+#                    ("n/a" when a side is missing or the peer's length is 0)
+# It also prints hlr's stage split (read / sources / sort / lines) per case and summed.
+#
+# env:
+#   VIEWS    comma list of views                 (default front,top,right,iso)
+#   SKIP     comma list of mesh names to skip, without .off (default none), e.g. SKIP=refined_elephant
+#   REPEAT   peer repeats (minimum is taken)     (default 5; REPEAT=1 when time is short)
+#   HLR_REPEAT  runs of each hlr command; the one with the least stats.seconds is reported
+#            (default 1)
+#   THREADS  peer threads                        (default 1; hlr is single-threaded)
+#   TIMEOUT  seconds allowed per hlr run, 0 = no limit (default 0); a timeout counts as "failed"
+#   HLR      hlr binary                          (default build/app/hlr)
+#   PYTHON   python for JSON/CSV work            (default /usr/bin/python3)
+#   OUT      CSV to write                        (default bench/draw/results/<UTC date>.csv)
+#   KEEP=DIR keep hlr's JSON (the last run's), stats and logs, and the peer's SVG/JSON/logs in
+#            DIR (default: a temp dir, removed at the end unless something failed)
+#   STROKES=1  with KEEP: after the timed runs, run the peer's lineart_measure.py once more per
+#            mesh and view (--repeat 1, untimed, not in the CSV) with --strokes, into
+#            DIR/peer/<mesh>_<view>.strokes.json: every stroke at full precision, for
+#            bench/draw/union_lengths.py (which else reads the SVG, rounded to 0.001 px)
+# Lengths of both tools under one rule (union of coincident segments, hidden under visible
+# removed) and what only one tool draws: bench/draw/union_lengths.py DIR on a KEEP folder.
+# The option handling, the timed hlr runs and the peer run are shared with
+# bench/surfaces/run.sh in bench/common.sh and bench/common.py.
+# needs: a built hlr (build/app/hlr) and Blender (apt-get install -y blender).
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+source "$here/../common.sh"    # options, mesh list, work folder, hlr and peer runs; cd to the root
+out="${OUT:-$here/results/$(date -u +%F).csv}"
+if [ -n "${KEEP:-}" ]; then KEEP_HLR_JSON=1; fi
+
+bench_check
+bench_meshes "$@"
+bench_workdir
+mkdir -p "$(dirname "$out")"
+bench_banner "(hlr draw, exact kernel)"
+
+for mesh in "${meshes[@]}"; do
+  name="$(basename "${mesh%.*}")"
+  if bench_skip "$name" "$mesh"; then continue; fi
+  for view in ${views//,/ }; do
+    bench_hlr "$name" "$view" exact "$work/hlr_${name}_${view}" \
+      draw "$mesh" --view "$view" --kernel exact || any_fail=1
+  done
+  bench_peer "$mesh" "$name"
+  if [ "${STROKES:-0}" = 1 ] && [ "$keep" = 1 ] && [ "$have_peer" = 1 ]; then
+    for view in ${views//,/ }; do
+      blender -b -noaudio -t "$threads" -P "$(dirname "$peer")/lineart_measure.py" -- --off "$mesh" \
+        --view "$view" --threads "$threads" --repeat 1 --strokes "$work/peer/${name}_${view}.strokes.json" \
+        >"$work/peer/${name}_${view}.strokes.log" 2>&1 \
+        || echo "peer strokes failed on $name $view (log: $work/peer/${name}_${view}.strokes.log)" >&2
+    done
+  fi
+done
+
+BENCH_DIR="$bench_dir" "$py" - "$rows" "$work" "$out" <<'EOF'
+import csv, os, sys
+sys.path.insert(0, os.environ["BENCH_DIR"])
+from common import load_hlr, load_peer, sec
+rows_tsv, work, out = sys.argv[1:4]
+order, hlr = load_hlr(rows_tsv)    # (mesh, view) -> {"exact": best stats or None}
+peer = load_peer(work)
+
+def ratio(a, b, fmt):
+    return fmt % (a / b) if (a is not None and b) else "n/a"
+
+def num(x):
+    return "%.6f" % x if x is not None else "failed"
+
+cols = ["mesh", "view", "faces", "feature_lines", "hlr_s", "hlr_lines_s", "lineart_s", "ratio",
+        "hlr_vis_len", "hlr_hid_len", "hlr_hid_len_all", "lineart_vis_len", "lineart_hid_len",
+        "vis_len_ratio", "hid_len_ratio"]
+stages = ["read", "sources", "sort", "lines"]
+total = dict.fromkeys(stages, 0.0)
+with open(out, "w", newline="") as f:
+    w = csv.writer(f)
+    w.writerow(cols)
+    print("\n%-20s %-5s %6s %6s %9s %9s %9s %6s %10s %10s %10s %10s %10s %6s %6s"
+          % tuple(c[:10] for c in cols) + " | stages: read/sources/sort/lines")
+    for key in order:
+        ex = hlr[key].get("exact")
+        pr = peer.get(key)
+        la = float(pr["lineart_seconds"]) if pr else None
+        lav = float(pr["vis_len"]) if pr else None
+        lah = float(pr["hid_len"]) if pr else None
+        hv = ex["drawn_visible_length"] if ex else None
+        hh = ex["drawn_hidden_length"] if ex else None
+        row = [key[0], key[1], ex["faces"] if ex else (pr["faces"] if pr else ""),
+               ex["lines"] if ex else "", sec(ex),
+               "%.6f" % ex["stage_seconds"]["lines"] if ex else "failed",
+               num(la), ratio(ex["seconds"] if ex else None, la, "%.2f"),
+               num(hv), num(hh), num(ex["bench_hidden_length_all"] if ex else None),
+               num(lav), num(lah), ratio(hv, lav, "%.4f"), ratio(hh, lah, "%.4f")]
+        w.writerow(row)
+        st = ""
+        if ex:
+            g = ex["stage_seconds"]
+            for s in stages:
+                total[s] += g[s]
+            st = " / ".join("%.3f" % g[s] for s in stages)
+        print("%-20s %-5s %6s %6s %9s %9s %9s %6s %10s %10s %10s %10s %10s %6s %6s" % tuple(
+            (c[:9] if i in (4, 5, 6) else c) if isinstance(c, str) else str(c)
+            for i, c in enumerate(row)) + " | " + st)
+s = sum(total.values())
+if s:
+    print("\nhlr stage split, summed over all cases: " +
+          ", ".join("%s %.1f%%" % (k, 100 * v / s) for k, v in total.items()) +
+          " (of %.2f s)" % s)
+print("\nwrote", out)
+EOF
+
+bench_done

@@ -12,6 +12,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <map>
@@ -103,6 +105,40 @@ bool straddles(const Mesh& mesh_g, const std::vector<std::uint32_t>& g, const st
   return below && above;
 }
 
+// Two triangles (v, f1, f2) and (v, g1, g2) sharing the corner v, each with its other two corners
+// strictly on both sides of the other's plane: their planes meet in a line through v, and each
+// triangle covers one ray of it from v. They cross (share a stretch of positive length inside
+// both) exactly when the rays agree, that is when q, the point where f1 f2 meets g's plane, lies
+// strictly on g2's side of the line v g1 within g's plane. With u = g1 - v, n = u x (g2 - v),
+// d(x) = (x - v).n and h(x) = (u x (x - v)).n, that is sign((d1 h(f2) - d2 h(f1)) / (d1 - d2)) > 0.
+// Evaluated in interval arithmetic, and exactly (rationals) only when the intervals cannot decide.
+template <class NT>
+CGAL::Uncertain<CGAL::Sign> shared_corner_sign(const Vec3& v, const Vec3& f1, const Vec3& f2, const Vec3& g1,
+                                              const Vec3& g2) {
+  using V = std::array<NT, 3>;
+  // Explicit result types: gmpxx's expression templates must not outlive a lambda's temporaries.
+  auto sub = [](const Vec3& a, const Vec3& b) -> V { return V{NT(a[0]) - NT(b[0]), NT(a[1]) - NT(b[1]), NT(a[2]) - NT(b[2])}; };
+  auto cross = [](const V& a, const V& b) -> V {
+    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  auto dot = [](const V& a, const V& b) -> NT { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const V u = sub(g1, v), n = cross(u, sub(g2, v));
+  const V r1 = sub(f1, v), r2 = sub(f2, v);
+  const NT d1 = dot(r1, n), d2 = dot(r2, n);
+  const NT h1 = dot(cross(u, r1), n), h2 = dot(cross(u, r2), n);
+  const NT num = d1 * h2 - d2 * h1, den = d1 - d2;
+  return CGAL::sign(num) * CGAL::sign(den);
+}
+
+bool crosses_at_shared_corner(const Vec3& v, const Vec3& f1, const Vec3& f2, const Vec3& g1, const Vec3& g2) {
+  {
+    CGAL::Protect_FPU_rounding<true> protect;
+    const auto s = shared_corner_sign<CGAL::Interval_nt<false>>(v, f1, f2, g1, g2);
+    if (CGAL::is_certain(s)) return CGAL::get_certain(s) == CGAL::POSITIVE;
+  }
+  return shared_corner_sign<CGAL::Exact_rational>(v, f1, f2, g1, g2) == CGAL::POSITIVE;
+}
+
 }  // namespace
 
 std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes) {
@@ -143,6 +179,17 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     // constructions for the many curved-surface neighbours that straddle each other's planes but
     // do not meet.
     if (fc.size() == 3 && gc.size() == 3) {
+      if (same_mesh) {
+        // Neighbours around a corner straddle each other's planes all over curved surfaces; they
+        // cross only if the two rays of their intersection line from the shared corner agree.
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j)
+            if (fc[i] == gc[j]) {
+              const Mesh& m = meshes[f.mesh];
+              return crosses_at_shared_corner(m.vertices[fc[i]], m.vertices[fc[(i + 1) % 3]], m.vertices[fc[(i + 2) % 3]],
+                                              m.vertices[gc[(j + 1) % 3]], m.vertices[gc[(j + 2) % 3]]);
+            }
+      }
       auto corner = [&](const FaceRef& r, int k) {
         const auto& c = meshes[r.mesh].vertices[meshes[r.mesh].faces[r.face][k]];
         return IK::Point_3(c[0], c[1], c[2]);

@@ -1,0 +1,48 @@
+// intersection_lines on two triangles of one mesh that share a corner (the shortcut taken for
+// them: one exact predicate instead of constructions), against CGAL's exact triangle-triangle
+// intersection on Epeck: the pair must give an intersection line exactly when CGAL's intersection
+// is a segment of positive length whose middle lies inside both triangles.
+#include <hlr/hidden_line/lines.hpp>
+
+#include <CGAL/intersections.h>
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+namespace hlr::hltest {
+namespace {
+
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+
+bool in_relative_interior(const EK::Triangle_3& t, const EK::Point_3& p) {
+  if (!t.has_on(p)) return false;
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::collinear(t[i], t[(i + 1) % 3], p)) return false;
+  return true;
+}
+
+bool crossing_by_cgal(const EK::Triangle_3& a, const EK::Triangle_3& b) {
+  const auto meet = CGAL::intersection(a, b);
+  if (!meet) return false;
+  const EK::Segment_3* s = boost::get<EK::Segment_3>(&*meet);
+  if (!s) return false;
+  const EK::Point_3 mid = CGAL::midpoint(s->source(), s->target());
+  return in_relative_interior(a, mid) && in_relative_interior(b, mid);
+}
+
+RC_GTEST_PROP(Intersections, TrianglesSharingACornerCrossAsCgalSays, ()) {
+  // Small grid coordinates force coplanar, collinear and touching cases.
+  auto coordinate = [] { return double(*rc::gen::inRange(-3, 4)); };
+  Mesh mesh;
+  mesh.file = "pair";
+  for (int v = 0; v < 5; ++v) mesh.vertices.push_back({coordinate(), coordinate(), coordinate()});
+  auto point = [&](int v) { return EK::Point_3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]); };
+  RC_PRE(!CGAL::collinear(point(0), point(1), point(2)) && !CGAL::collinear(point(0), point(3), point(4)));
+  mesh.faces = {{0, 1, 2}, {0, 3, 4}};
+  const bool found = !hidden_line::intersection_lines({mesh}).empty();
+  const bool expected = crossing_by_cgal(EK::Triangle_3(point(0), point(1), point(2)), EK::Triangle_3(point(0), point(3), point(4)));
+  RC_TAG(expected ? "crossing" : "not crossing");
+  RC_ASSERT(found == expected);
+}
+
+}  // namespace
+}  // namespace hlr::hltest

@@ -102,10 +102,7 @@ int solve(const DrawOptions& options, const View& view, KernelKind kind, const e
     segments = hidden_line::drawing_segments<K>(lines);
     times.precedence = seconds_since(mark);
   } catch (const clip::ClipError& e) {
-    // Only the inexact kernels get here: their rounded decisions can contradict each other.
-    throw UserError(options.scene.meshes.front(), std::string("the ") + kernel_name(kind) +
-                                                      " kernel failed on this view (" + e.what() +
-                                                      "); the exact kernel does not");
+    throw inexact_kernel_failure(options.scene, kind, e);
   }
   times.total = seconds_since(start);
 
@@ -153,14 +150,7 @@ int run(const DrawOptions& options) {
     }
   }
   style.hidden = options.hidden == "dashed";
-  KernelKind kind = KernelKind::exact;
-  parse_kernel_kind(options.scene.kernel, kind);
-  switch (kind) {
-    case KernelKind::epick: return solve<EpickKernel>(options, *view, kind, style);
-    case KernelKind::floating: return solve<DoubleKernel>(options, *view, kind, style);
-    case KernelKind::exact: break;
-  }
-  return solve<ExactKernel>(options, *view, kind, style);
+  return with_kernel(options.scene, [&]<class K>(KernelKind kind) { return solve<K>(options, *view, kind, style); });
 }
 
 }  // namespace

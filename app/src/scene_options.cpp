@@ -61,6 +61,11 @@ Scene load_scene(const std::vector<std::string>& paths) {
   return scene;
 }
 
+UserError inexact_kernel_failure(const SceneOptions& options, KernelKind kind, const std::exception& e) {
+  return UserError(options.meshes.front(), std::string("the ") + kernel_name(kind) + " kernel failed on this view (" +
+                                               e.what() + "); the exact kernel does not");
+}
+
 bool has_extension(const std::string& path, const std::string& extension) {
   if (path.size() <= extension.size()) return false;
   return std::equal(extension.begin(), extension.end(), path.end() - extension.size(), [](char a, char b) {

@@ -2,6 +2,8 @@
 // kernel option, and reading the meshes.
 #pragma once
 
+#include "errors.hpp"
+
 #include <hlr/export/surfaces.hpp>
 #include <hlr/kernel/view.hpp>
 
@@ -34,6 +36,23 @@ struct Scene {
 
 // Reads every mesh (throws ImportError) and prints the importer's warnings.
 Scene load_scene(const std::vector<std::string>& paths);
+
+// Calls solve.template operator()<K>(kind) with the kernel type the options name.
+template <class Solve>
+int with_kernel(const SceneOptions& options, Solve&& solve) {
+  KernelKind kind = KernelKind::exact;
+  parse_kernel_kind(options.kernel, kind);
+  switch (kind) {
+    case KernelKind::epick: return solve.template operator()<EpickKernel>(kind);
+    case KernelKind::floating: return solve.template operator()<DoubleKernel>(kind);
+    case KernelKind::exact: break;
+  }
+  return solve.template operator()<ExactKernel>(kind);
+}
+
+// The error for a run whose inexact kernel contradicted itself (a ClipError: the exact kernel
+// never throws one on valid input).
+UserError inexact_kernel_failure(const SceneOptions& options, KernelKind kind, const std::exception& e);
 
 // Whether a path ends in `extension` (".svg"), in any letter case.
 bool has_extension(const std::string& path, const std::string& extension);

@@ -59,10 +59,7 @@ int solve(const SurfacesOptions& options, const View& view, KernelKind kind) {
     map = hidden_line::area_sort<K>(sources);
     times.sort = seconds_since(mark);
   } catch (const clip::ClipError& e) {
-    // Only the inexact kernels get here: their rounded decisions can contradict each other.
-    throw UserError(options.scene.meshes.front(), std::string("the ") + kernel_name(kind) +
-                                                " kernel failed on this view (" + e.what() +
-                                                "); the exact kernel does not");
+    throw inexact_kernel_failure(options.scene, kind, e);
   }
   times.total = seconds_since(start);
 
@@ -90,14 +87,7 @@ int solve(const SurfacesOptions& options, const View& view, KernelKind kind) {
 int run(const SurfacesOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
   if (!view) return kExitUsage;
-  KernelKind kind = KernelKind::exact;
-  parse_kernel_kind(options.scene.kernel, kind);
-  switch (kind) {
-    case KernelKind::epick: return solve<EpickKernel>(options, *view, kind);
-    case KernelKind::floating: return solve<DoubleKernel>(options, *view, kind);
-    case KernelKind::exact: break;
-  }
-  return solve<ExactKernel>(options, *view, kind);
+  return with_kernel(options.scene, [&]<class K>(KernelKind kind) { return solve<K>(options, *view, kind); });
 }
 
 }  // namespace

@@ -15,8 +15,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   using FT = typename G::FT;
   LineDrawing d;
   d.input = input;
-  const View& v = frame.view();
-  d.view = {v.name, v.direction, v.up, frame.world_to_view()};
+  d.view = view_info(frame);
   d.kernel = kernel;
   d.stats = lines.stats;
   auto round = [&](const FT& value, int axis) { return G::to_double(value) / frame.scale(axis) + 0.0; };  // no -0

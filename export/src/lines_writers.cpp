@@ -15,6 +15,8 @@
 // round-trip numbers), and the HEADER section is written once the last handle is known.
 #include <hlr/export/lines.hpp>
 
+#include "document_json.hpp"
+
 #include <dl_dxf.h>
 #include <dl_writer_ascii.h>
 #include <nlohmann/json.hpp>
@@ -306,6 +308,26 @@ std::vector<DrawingPolyline> chain_segments(const std::vector<DrawingSegment>& s
   return chains;
 }
 
+namespace detail {
+
+json input_json(const InputInfo& input) {
+  return {{"files", input.files}, {"faces", input.faces}, {"vertices", input.vertices}};
+}
+
+json view_json(const ViewInfo& v) {
+  json view;
+  view["projection"] = "orthographic";
+  if (v.name != "custom") view["name"] = v.name;
+  view["direction"] = {v.direction[0], v.direction[1], v.direction[2]};
+  view["up"] = {v.up[0], v.up[1], v.up[2]};
+  json matrix = json::array();
+  for (const auto& row : v.world_to_view) matrix.push_back({row[0], row[1], row[2], row[3]});
+  view["world_to_view"] = std::move(matrix);
+  return view;
+}
+
+}  // namespace detail
+
 double LineDrawing::length(bool visible) const {
   double sum = 0;
   for (const auto& seg : segments)
@@ -316,18 +338,8 @@ double LineDrawing::length(bool visible) const {
 std::string lines_json(const LineDrawing& drawing) {
   json out;
   out["format"] = "hlr-lines/1";
-  // "input" and "view" as hlr-surfaces/1 writes them (export/src/surfaces_impl.hpp).
-  out["input"] = {{"files", drawing.input.files}, {"faces", drawing.input.faces}, {"vertices", drawing.input.vertices}};
-  const ViewInfo& v = drawing.view;
-  json view;
-  view["projection"] = "orthographic";
-  if (v.name != "custom") view["name"] = v.name;
-  view["direction"] = {v.direction[0], v.direction[1], v.direction[2]};
-  view["up"] = {v.up[0], v.up[1], v.up[2]};
-  json matrix = json::array();
-  for (const auto& row : v.world_to_view) matrix.push_back({row[0], row[1], row[2], row[3]});
-  view["world_to_view"] = std::move(matrix);
-  out["view"] = std::move(view);
+  out["input"] = detail::input_json(drawing.input);
+  out["view"] = detail::view_json(drawing.view);
 
   json lines = json::array();
   for (const auto& p : drawing.pieces) {

@@ -3,6 +3,8 @@
 
 #include <hlr/export/surfaces.hpp>
 
+#include "document_json.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -63,19 +65,6 @@ std::array<double, 4> orthonormal_plane(const hidden_line::DepthPlane<K>& plane,
   return {n[0] / len, n[1] / len, n[2] / len, n[3] / len};
 }
 
-template <class K>
-json view_json(const ViewFrame<K>& frame) {
-  const View& v = frame.view();
-  json view;
-  view["projection"] = "orthographic";
-  if (v.name != "custom") view["name"] = v.name;
-  view["direction"] = {v.direction[0], v.direction[1], v.direction[2]};
-  view["up"] = {v.up[0], v.up[1], v.up[2]};
-  json m = json::array();
-  for (const auto& row : frame.world_to_view()) m.push_back({row[0], row[1], row[2], row[3]});
-  view["world_to_view"] = m;
-  return view;
-}
 
 }  // namespace detail
 
@@ -86,8 +75,8 @@ std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
   const detail::Rounder<K> r{doc.frame};
   json out;
   out["format"] = "hlr-surfaces/1";
-  out["input"] = {{"files", doc.input.files}, {"faces", doc.input.faces}, {"vertices", doc.input.vertices}};
-  out["view"] = detail::view_json(doc.frame);
+  out["input"] = detail::input_json(doc.input);
+  out["view"] = detail::view_json(view_info(doc.frame));
   out["kernel"] = kernel_name(doc.kernel);
 
   json sources = json::array();

@@ -48,6 +48,34 @@ Mesh part_of(const Mesh& mesh, const std::vector<int>& part, int k) {
   return out;
 }
 
+// Runs the engine on the meshes with a random crease threshold and back-face option, checks the
+// result with the oracle, and classifies the case.
+LineReport run_and_check_random_options(const std::vector<Mesh>& meshes, const View& view) {
+  hidden_line::LineOptions options;
+  options.features.crease_degrees = *rc::gen::element(30.0, 30.0, 0.0, 45.0, 90.0, 135.0, 180.0);
+  const bool remove_back_faces = *rc::gen::arbitrary<bool>();
+
+  std::ostringstream context;
+  context << "view " << view_text(view) << ", crease " << options.features.crease_degrees << " degrees, back faces "
+          << (remove_back_faces ? "removed" : "kept") << "\n";
+  for (std::size_t m = 0; m < meshes.size(); ++m) context << "mesh " << m << ":\n" << off_text(meshes[m]);
+
+  LineRun run;
+  try {
+    run = run_lines(meshes, view, options, remove_back_faces);
+  } catch (const std::exception& e) {
+    RC_FAIL(std::string("exception: ") + e.what() + "\n" + context.str());
+  }
+  const LineOracle oracle(meshes, view);
+  LineReport report = check_lines(oracle, run.set, check_options_for(options));
+  if (!report.ok()) RC_FAIL(report.summary() + "\n" + context.str());
+  const auto& by_kind = run.set.stats.by_kind;
+  RC_CLASSIFY(by_kind[static_cast<int>(FeatureKind::intersection)] > 0, "intersection lines");
+  RC_CLASSIFY(by_kind[static_cast<int>(FeatureKind::silhouette)] > 0, "silhouettes");
+  RC_CLASSIFY(run.set.stats.hidden_pieces > 0, "hidden pieces");
+  return report;
+}
+
 RC_GTEST_PROP(LinesProperty, TriangleSoupsSatisfyTheContract, ()) {
   const Soup soup = random_soup();
   Mesh mesh = to_mesh(soup);
@@ -66,28 +94,7 @@ RC_GTEST_PROP(LinesProperty, TriangleSoupsSatisfyTheContract, ()) {
       if (!m.faces.empty()) meshes.push_back(std::move(m));
     }
   }
-  hidden_line::LineOptions options;
-  options.features.crease_degrees = *rc::gen::element(30.0, 30.0, 0.0, 45.0, 90.0, 135.0, 180.0);
-  const bool remove_back_faces = *rc::gen::arbitrary<bool>();
-
-  std::ostringstream context;
-  context << "view " << view_text(soup.view) << ", crease " << options.features.crease_degrees << " degrees, back faces "
-          << (remove_back_faces ? "removed" : "kept") << "\n";
-  for (std::size_t m = 0; m < meshes.size(); ++m) context << "mesh " << m << ":\n" << off_text(meshes[m]);
-
-  LineRun run;
-  try {
-    run = run_lines(meshes, soup.view, options, remove_back_faces);
-  } catch (const std::exception& e) {
-    RC_FAIL(std::string("exception: ") + e.what() + "\n" + context.str());
-  }
-  const LineOracle oracle(meshes, soup.view);
-  const LineReport report = check_lines(oracle, run.set, check_options_for(options));
-  if (!report.ok()) RC_FAIL(report.summary() + "\n" + context.str());
-  const auto& by_kind = run.set.stats.by_kind;
-  RC_CLASSIFY(by_kind[static_cast<int>(FeatureKind::intersection)] > 0, "intersection lines");
-  RC_CLASSIFY(by_kind[static_cast<int>(FeatureKind::silhouette)] > 0, "silhouettes");
-  RC_CLASSIFY(run.set.stats.hidden_pieces > 0, "hidden pieces");
+  const LineReport report = run_and_check_random_options(meshes, soup.view);
   RC_CLASSIFY(report.notes.count("(b) isolated hidden point in a visible piece") > 0, "isolated hidden point");
 }
 
@@ -203,28 +210,7 @@ RC_GTEST_PROP(LinesProperty, PolygonFacesAndPrismsSatisfyTheContract, ()) {
   Soup soup = random_soup();
   soup.triangles.resize(static_cast<std::size_t>(*rc::gen::inRange(0, 4)));
   if (!soup.triangles.empty()) meshes.push_back(to_mesh(soup));
-  hidden_line::LineOptions options;
-  options.features.crease_degrees = *rc::gen::element(30.0, 30.0, 0.0, 45.0, 90.0, 135.0, 180.0);
-  const bool remove_back_faces = *rc::gen::arbitrary<bool>();
-
-  std::ostringstream context;
-  context << "view " << view_text(soup.view) << ", crease " << options.features.crease_degrees << " degrees, back faces "
-          << (remove_back_faces ? "removed" : "kept") << "\n";
-  for (std::size_t m = 0; m < meshes.size(); ++m) context << "mesh " << m << ":\n" << off_text(meshes[m]);
-
-  LineRun run;
-  try {
-    run = run_lines(meshes, soup.view, options, remove_back_faces);
-  } catch (const std::exception& e) {
-    RC_FAIL(std::string("exception: ") + e.what() + "\n" + context.str());
-  }
-  const LineOracle oracle(meshes, soup.view);
-  const LineReport report = check_lines(oracle, run.set, check_options_for(options));
-  if (!report.ok()) RC_FAIL(report.summary() + "\n" + context.str());
-  const auto& by_kind = run.set.stats.by_kind;
-  RC_CLASSIFY(by_kind[static_cast<int>(FeatureKind::intersection)] > 0, "intersection lines");
-  RC_CLASSIFY(by_kind[static_cast<int>(FeatureKind::silhouette)] > 0, "silhouettes");
-  RC_CLASSIFY(run.set.stats.hidden_pieces > 0, "hidden pieces");
+  run_and_check_random_options(meshes, soup.view);
 }
 
 }  // namespace

@@ -7,14 +7,7 @@
 set -eu
 hlr=$1 checker=$2 fixtures=$3 work=$4
 
-if ! [ -x /usr/bin/python3 ] || ! /usr/bin/python3 -c 'import ezdxf' 2>/dev/null; then
-  echo "skipped: /usr/bin/python3 has no ezdxf (apt-get install python3-ezdxf)"
-  exit 77
-fi
-if ! command -v rsvg-convert >/dev/null 2>&1; then
-  echo "skipped: rsvg-convert is missing (apt-get install librsvg2-bin)"
-  exit 77
-fi
+. "$(dirname "$0")/require_checkers.sh"
 
 rm -rf "$work"
 mkdir -p "$work"

@@ -41,12 +41,6 @@ struct DrawingSegment {
   bool visible = true;
 };
 
-struct ViewInfo {
-  std::string name;  // "front", ..., "custom"
-  Point3 direction{}, up{};
-  std::array<std::array<double, 4>, 4> world_to_view{};
-};
-
 struct LineDrawing {
   InputInfo input;
   ViewInfo view;

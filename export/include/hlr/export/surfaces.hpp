@@ -22,6 +22,18 @@ struct InputInfo {
   std::size_t faces = 0, vertices = 0;
 };
 
+// The view as the documents write it: the orthonormal frame in double.
+struct ViewInfo {
+  std::string name;  // "front", ..., "custom"
+  std::array<double, 3> direction{}, up{};
+  std::array<std::array<double, 4>, 4> world_to_view{};
+};
+template <class K>
+ViewInfo view_info(const ViewFrame<K>& frame) {
+  const View& v = frame.view();
+  return {v.name, v.direction, v.up, frame.world_to_view()};
+}
+
 // Seconds per stage, reported in "stats".
 struct StageTimes {
   double read = 0, sources = 0, sort = 0, total = 0;

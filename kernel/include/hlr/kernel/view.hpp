@@ -106,7 +106,7 @@ class ViewFrame {
     std::array<std::array<double, 4>, 4> m{};
     for (int i = 0; i < 3; ++i) {
       const FT* axis = i == 0 ? x_ : i == 1 ? y_ : z_;
-      for (int k = 0; k < 3; ++k) m[i][k] = CGAL::to_double(axis[k]) / scale_[i];
+      for (int k = 0; k < 3; ++k) m[i][k] = CGAL::to_double(axis[k]) / scale_[i] + 0.0;  // + 0.0: no -0
     }
     m[3][3] = 1;
     return m;

@@ -47,7 +47,9 @@ std::optional<double> parse_scale(const std::string& text) {
   const auto drawing = number(std::string_view(text).substr(0, colon));
   const auto model = number(std::string_view(text).substr(colon + 1));
   if (!drawing || !model) return std::nullopt;
-  return *drawing / *model;
+  const double scale = *drawing / *model;
+  if (!(scale > 0) || !std::isfinite(scale)) return std::nullopt;
+  return scale;
 }
 
 // Stage lines on stderr once a run is long enough for a person to wonder.

@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace hlr::hidden_line {
 namespace detail {

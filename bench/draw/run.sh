@@ -10,15 +10,24 @@
 # and the peer script ../shared/peers/blender_lineart/run.sh (Blender Line Art) on the same
 # mesh and views, then writes one CSV:
 #   bench/draw/results/<UTC date>.csv
-# columns: mesh, view, faces, feature_lines, hlr_s, hlr_lines_s, lineart_s, ratio,
-#          hlr_vis_len, hlr_hid_len, hlr_hid_len_all, lineart_vis_len, lineart_hid_len,
-#          vis_len_ratio, hid_len_ratio
+# columns: mesh, view, faces, feature_lines, hlr_s, hlr_lines_s, hlr_intersections_s,
+#          hlr_precedence_s, lineart_s, ratio, hlr_vis_len, hlr_hid_len, hlr_hid_len_all,
+#          lineart_vis_len, lineart_hid_len, vis_len_ratio, hid_len_ratio
 #   faces            stats/input faces of hlr's JSON (else the peer's)
 #   feature_lines    stats.lines: feature lines hlr found (silhouette, crease, boundary, group,
 #                    intersection), before splitting into visible and hidden pieces
-#   hlr_s            stats.seconds (total: read + sources + sort + lines; not writing the file),
-#                    minimum over HLR_REPEAT runs, or "failed" (non-zero exit or timeout)
-#   hlr_lines_s      stats.stage_seconds.lines of that run
+#   hlr_s            stats.seconds (total: read + sources + sort + intersections + lines +
+#                    precedence; not writing the file), minimum over HLR_REPEAT runs, or "failed"
+#                    (non-zero exit or timeout)
+#   hlr_lines_s      stats.stage_seconds.lines of that run: classifying the feature lines into
+#                    visible and hidden pieces only. (Before the stage split, at 74750b5, "lines"
+#                    also held the penetration search and precedence: compare older CSVs with
+#                    the sum of the three columns.)
+#   hlr_intersections_s  stats.stage_seconds.intersections: the penetration search
+#                    (intersection lines between faces)
+#   hlr_precedence_s stats.stage_seconds.precedence: ISO 128 precedence (hidden under visible
+#                    removed, coincident duplicates once)
+#                    These three are "n/a" when the hlr binary's JSON lacks that stage.
 #   lineart_s        the peer's lineart_seconds (Line Art's own timer, minimum of REPEAT runs),
 #                    or "failed"
 #   ratio            hlr_s / lineart_s (> 1: hlr is slower), or "n/a"
@@ -33,7 +42,8 @@
 #                    world units (the same frame and scale as hlr's)
 #   vis_len_ratio    hlr_vis_len / lineart_vis_len; hid_len_ratio = hlr_hid_len / lineart_hid_len
 #                    ("n/a" when a side is missing or the peer's length is 0)
-# It also prints hlr's stage split (read / sources / sort / lines) per case and summed.
+# It also prints hlr's stage split (read / sources / sort / intersections / lines / precedence)
+# per case and summed.
 #
 # env:
 #   VIEWS    comma list of views                 (default front,top,right,iso)
@@ -102,16 +112,25 @@ def ratio(a, b, fmt):
 def num(x):
     return "%.6f" % x if x is not None else "failed"
 
-cols = ["mesh", "view", "faces", "feature_lines", "hlr_s", "hlr_lines_s", "lineart_s", "ratio",
-        "hlr_vis_len", "hlr_hid_len", "hlr_hid_len_all", "lineart_vis_len", "lineart_hid_len",
-        "vis_len_ratio", "hid_len_ratio"]
-stages = ["read", "sources", "sort", "lines"]
+cols = ["mesh", "view", "faces", "feature_lines", "hlr_s", "hlr_lines_s", "hlr_intersections_s",
+        "hlr_precedence_s", "lineart_s", "ratio", "hlr_vis_len", "hlr_hid_len", "hlr_hid_len_all",
+        "lineart_vis_len", "lineart_hid_len", "vis_len_ratio", "hid_len_ratio"]
+stages = ["read", "sources", "sort", "intersections", "lines", "precedence"]
+
+def stage(ex, s):
+    if not ex:
+        return "failed"
+    g = ex.get("stage_seconds", {})
+    return "%.6f" % g[s] if s in g else "n/a"
+
+fmt = "%-20s %-5s %6s %6s %9s %9s %9s %9s %9s %6s %10s %10s %10s %10s %10s %6s %6s"
+timed = (4, 5, 6, 7, 8)   # columns printed as seconds, cut to 9 characters
 total = dict.fromkeys(stages, 0.0)
 with open(out, "w", newline="") as f:
     w = csv.writer(f)
     w.writerow(cols)
-    print("\n%-20s %-5s %6s %6s %9s %9s %9s %6s %10s %10s %10s %10s %10s %6s %6s"
-          % tuple(c[:10] for c in cols) + " | stages: read/sources/sort/lines")
+    print("\n" + fmt % tuple(c[:10] for c in cols)
+          + " | stages: read/sources/sort/intersections/lines/precedence")
     for key in order:
         ex = hlr[key].get("exact")
         pr = peer.get(key)
@@ -122,7 +141,7 @@ with open(out, "w", newline="") as f:
         hh = ex["drawn_hidden_length"] if ex else None
         row = [key[0], key[1], ex["faces"] if ex else (pr["faces"] if pr else ""),
                ex["lines"] if ex else "", sec(ex),
-               "%.6f" % ex["stage_seconds"]["lines"] if ex else "failed",
+               stage(ex, "lines"), stage(ex, "intersections"), stage(ex, "precedence"),
                num(la), ratio(ex["seconds"] if ex else None, la, "%.2f"),
                num(hv), num(hh), num(ex["bench_hidden_length_all"] if ex else None),
                num(lav), num(lah), ratio(hv, lav, "%.4f"), ratio(hh, lah, "%.4f")]
@@ -131,10 +150,10 @@ with open(out, "w", newline="") as f:
         if ex:
             g = ex["stage_seconds"]
             for s in stages:
-                total[s] += g[s]
-            st = " / ".join("%.3f" % g[s] for s in stages)
-        print("%-20s %-5s %6s %6s %9s %9s %9s %6s %10s %10s %10s %10s %10s %6s %6s" % tuple(
-            (c[:9] if i in (4, 5, 6) else c) if isinstance(c, str) else str(c)
+                total[s] += g.get(s, 0.0)
+            st = " / ".join("%.3f" % g[s] if s in g else "n/a" for s in stages)
+        print(fmt % tuple(
+            (c[:9] if i in timed else c) if isinstance(c, str) else str(c)
             for i, c in enumerate(row)) + " | " + st)
 s = sum(total.values())
 if s:

@@ -340,6 +340,7 @@ std::string lines_json(const LineDrawing& drawing) {
   out["format"] = "hlr-lines/1";
   out["input"] = detail::input_json(drawing.input);
   out["view"] = detail::view_json(drawing.view);
+  out["kernel"] = kernel_name(drawing.kernel);  // top level, as in hlr-clip/1 and hlr-surfaces/1
 
   json lines = json::array();
   for (const auto& p : drawing.pieces) {
@@ -376,7 +377,6 @@ std::string lines_json(const LineDrawing& drawing) {
       {"hidden_pieces", s.hidden_pieces},
       {"drawn_visible_length", drawing.visible_length()},
       {"drawn_hidden_length", drawing.hidden_length()},
-      {"kernel", kernel_name(drawing.kernel)},
       {"crease_degrees", drawing.crease_degrees},
   };
   return out.dump(1) + "\n";

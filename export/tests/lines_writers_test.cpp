@@ -254,7 +254,7 @@ TEST(LinesJson, FieldByField) {
   EXPECT_EQ(s["lines_seen_end_on"], 3);
   EXPECT_EQ(s["visible_pieces"], 1);
   EXPECT_EQ(s["hidden_pieces"], 1);
-  EXPECT_EQ(s["kernel"], "exact");
+  EXPECT_EQ(j["kernel"], "exact");
   EXPECT_EQ(s["crease_degrees"], 45);
 }
 
@@ -268,7 +268,7 @@ TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {
   EXPECT_EQ(j["view"]["direction"], json({1, 2, -3}));
   EXPECT_TRUE(j["lines"].is_array());
   EXPECT_TRUE(j["lines"].empty());
-  EXPECT_EQ(j["stats"]["kernel"], "epick");
+  EXPECT_EQ(j["kernel"], "epick");
 }
 
 // --------------------------------------------------------------------------------------------

@@ -140,7 +140,7 @@ def check_json(path):
     stages = stats.get("stage_seconds")
     require(isinstance(stages, dict) and all(is_number(stages.get(k)) for k in ("read", "sources", "sort", "lines")),
             "stats.stage_seconds lacks read, sources, sort or lines")
-    require(isinstance(stats.get("kernel"), str), "stats.kernel is not a string")
+    require(isinstance(doc.get("kernel"), str), "kernel is not a string")
     require(is_number(stats.get("crease_degrees")), "stats.crease_degrees is not a number")
     visible = sum(1 for line in lines if line["visible"])
     return f"{len(lines)} lines ({visible} visible, {len(lines) - visible} hidden)"

@@ -574,14 +574,7 @@ std::string LineReport::summary() const {
   std::ostringstream out;
   out << lines << " lines, " << pieces << " pieces, " << samples << " sample points, " << intersection_points
       << " intersection points, " << penetrations << " penetrations checked";
-  for (const auto& [kind, count] : notes) out << "; " << kind << ": " << count;
-  if (failures.empty()) {
-    out << "; no failure";
-  } else {
-    out << "\nFAILURES:";
-    for (const auto& [kind, count] : failures) out << "\n  " << kind << ": " << count;
-    for (const auto& m : messages) out << "\n  - " << m;
-  }
+  append_outcome(out, notes, failures, messages);
   return out.str();
 }
 

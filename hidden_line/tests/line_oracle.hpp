@@ -49,6 +49,7 @@
 // described with exact numbers, enough to reproduce them.
 #pragma once
 
+#include "surface_checks.hpp"
 #include "surface_oracle.hpp"
 
 #include <hlr/hidden_line/lines.hpp>

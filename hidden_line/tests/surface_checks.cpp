@@ -19,14 +19,7 @@ std::size_t CheckReport::failure_count() const {
 std::string CheckReport::summary() const {
   std::ostringstream out;
   out << visible_checked << " visible and " << hidden_checked << " hidden fragments checked";
-  for (const auto& [kind, count] : notes) out << "; " << kind << ": " << count;
-  if (failures.empty()) {
-    out << "; no failure";
-  } else {
-    out << "\nFAILURES:";
-    for (const auto& [kind, count] : failures) out << "\n  " << kind << ": " << count;
-    for (const auto& m : messages) out << "\n  - " << m;
-  }
+  append_outcome(out, notes, failures, messages);
   return out.str();
 }
 
@@ -357,6 +350,18 @@ CheckReport check_map(const SceneOracle& oracle, const XMap& map, const CheckOpt
   CheckReport report;
   Checker(oracle, map, options, report).run();
   return report;
+}
+
+void append_outcome(std::ostream& out, const std::map<std::string, std::size_t>& notes,
+                    const std::map<std::string, std::size_t>& failures, const std::vector<std::string>& messages) {
+  for (const auto& [kind, count] : notes) out << "; " << kind << ": " << count;
+  if (failures.empty()) {
+    out << "; no failure";
+    return;
+  }
+  out << "\nFAILURES:";
+  for (const auto& [kind, count] : failures) out << "\n  " << kind << ": " << count;
+  for (const auto& m : messages) out << "\n  - " << m;
 }
 
 }  // namespace hlr::hltest

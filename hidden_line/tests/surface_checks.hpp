@@ -28,6 +28,7 @@
 
 #include <cmath>
 #include <map>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -125,6 +126,10 @@ struct CheckReport {
 };
 
 CheckReport check_map(const SceneOracle& oracle, const XMap& map, const CheckOptions& options);
+
+// Appends the notes, then "no failure" or the failure counts and messages, to a report's summary.
+void append_outcome(std::ostream& out, const std::map<std::string, std::size_t>& notes,
+                    const std::map<std::string, std::size_t>& failures, const std::vector<std::string>& messages);
 
 // Text of a polygon with exact coordinates, for failure messages.
 std::string describe(const EPolygon& p);

@@ -77,19 +77,23 @@ int side_of_contour(const Contour<K>& contour, const Point<K>& q) {
   return inside ? 1 : -1;
 }
 
+}  // namespace detail
+
 // +1 inside the polygon (inside the outer contour, outside every hole), 0 on its boundary, -1
-// outside.
+// outside. Public (clipper.hpp); the overlay below uses it too.
 template <class K>
-int side_of_polygon(const Polygon<K>& polygon, const Point<K>& q) {
-  int s = side_of_contour(polygon.outer, q);
+int side_of_polygon(const Polygon<K>& polygon, const typename Geometry<K>::Point& q) {
+  int s = detail::side_of_contour(polygon.outer, q);
   if (s <= 0) return s;
   for (const auto& hole : polygon.holes) {
-    int h = side_of_contour(hole, q);
+    int h = detail::side_of_contour(hole, q);
     if (h == 0) return 0;
     if (h > 0) return -1;
   }
   return 1;
 }
+
+namespace detail {
 
 template <class K>
 int contour_orientation(const std::vector<Point<K>>& pts) {

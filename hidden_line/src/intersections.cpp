@@ -6,6 +6,7 @@
 // and faces that only touch. For the rest, the line where the two planes meet is intersected with
 // the relative interior of each face in the face's own plane (projected along the normal's largest
 // axis), and the two interval sets, measured with one parameter along the line, are intersected.
+#include "lines_impl.hpp"
 #include "sources_impl.hpp"
 
 #include <hlr/hidden_line/lines.hpp>
@@ -14,7 +15,6 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
-#include <CGAL/Polygon_2_algorithms.h>
 
 #include <map>
 #include <tuple>
@@ -30,9 +30,7 @@ struct FaceRef {
   std::uint32_t mesh, face;
 };
 
-struct Interval {
-  FT lo, hi;
-};
+using Interval = std::pair<FT, FT>;
 
 // The open intervals of parameters t for which p + t d lies in the relative interior of the face,
 // with intervals that meet at a point joined (the line runs on through a corner or along a
@@ -48,40 +46,17 @@ std::vector<Interval> interior_intervals(const Mesh& mesh, const std::vector<std
       if (!CGAL::is_zero(normal[k])) drop = k;
   const int u = (drop + 1) % 3, v = (drop + 2) % 3;
   auto project = [&](const EK::Point_3& q) { return EK::Point_2(q[u], q[v]); };
-  std::vector<EK::Point_2> poly;
+  clip::Polygon<EK> polygon;
   for (std::uint32_t vi : face) {
     const auto& c = mesh.vertices[vi];
-    poly.push_back(project(EK::Point_3(c[0], c[1], c[2])));
+    polygon.outer.points.push_back(project(EK::Point_3(c[0], c[1], c[2])));
   }
-  const EK::Point_2 l0 = project(p), l1 = project(p + d);
-  // The parameter of a point on the line, read off a coordinate in which the line moves.
-  const bool along_u = !CGAL::is_zero(l1.x() - l0.x());
-  auto param = [&](const EK::Point_2& q) {
-    return along_u ? (q.x() - l0.x()) / (l1.x() - l0.x()) : (q.y() - l0.y()) / (l1.y() - l0.y());
+  // The image of p + t d has parameter t along the image line.
+  const detail::ImageLine<EK> line(project(p), project(p + d));
+  auto edge = [](const clip::Contour<EK>& c, std::size_t i) {
+    return std::pair<const EK::Point_2&, const EK::Point_2&>(c.points[i], c.points[(i + 1) % c.size()]);
   };
-  std::vector<FT> ts;
-  const std::size_t n = poly.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const EK::Point_2 &a = poly[i], &b = poly[(i + 1) % n];
-    const auto oa = CGAL::orientation(l0, l1, a), ob = CGAL::orientation(l0, l1, b);
-    if (oa == CGAL::COLLINEAR) ts.push_back(param(a));
-    else if (ob != CGAL::COLLINEAR && oa != ob) {
-      // t where the line meets the edge's line: cross(a - l0, b - a) / cross(l1 - l0, b - a).
-      const EK::Vector_2 e = b - a, w = l1 - l0, r = a - l0;
-      ts.push_back((r.x() * e.y() - r.y() * e.x()) / (w.x() * e.y() - w.y() * e.x()));
-    }
-  }
-  std::sort(ts.begin(), ts.end());
-  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
-  std::vector<Interval> out;
-  for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
-    const FT mid = (ts[i] + ts[i + 1]) / 2;
-    const EK::Point_2 m(l0.x() + mid * (l1.x() - l0.x()), l0.y() + mid * (l1.y() - l0.y()));
-    if (CGAL::bounded_side_2(poly.begin(), poly.end(), m, EK()) != CGAL::ON_BOUNDED_SIDE) continue;
-    if (!out.empty() && out.back().hi == ts[i]) out.back().hi = ts[i + 1];
-    else out.push_back({ts[i], ts[i + 1]});
-  }
-  return out;
+  return detail::inside_intervals(line, polygon, edge, false, false);
 }
 
 EK::Point_3 input_point(const Mesh& mesh, std::uint32_t v) {
@@ -235,7 +210,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     const GroupPair key{f.mesh, topo[f.mesh].coplanar_group[f.face], g.mesh, topo[g.mesh].coplanar_group[g.face]};
     for (const Interval& x : in_f)
       for (const Interval& y : in_g) {
-        const FT lo = CGAL::max(x.lo, y.lo), hi = CGAL::min(x.hi, y.hi);
+        const FT lo = CGAL::max(x.first, y.first), hi = CGAL::min(x.second, y.second);
         if (!(lo < hi)) continue;
         EK::Point_3 a = p + lo * d, b = p + hi * d;
         if (CGAL::compare_xyz(b, a) == CGAL::SMALLER) std::swap(a, b);

@@ -106,35 +106,6 @@ struct ImageLine {
   CGAL::Bbox_2 bbox() const { return G::bbox(a) + G::bbox(b); }
 };
 
-enum class Location { outside, boundary, inside };
-
-// Where a point lies with respect to a closed polygon with holes, exactly.
-template <class K>
-Location locate(const typename Geometry<K>::Point& q, const clip::Polygon<K>& polygon) {
-  using G = Geometry<K>;
-  auto in_contour = [&](const clip::Contour<K>& c) {
-    bool inside = false;
-    const std::size_t n = c.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto &p = c.points[i], &r = c.points[(i + 1) % n];
-      const int o = G::orientation(p, r, q);
-      if (o == 0 && G::compare_xy(p, q) * G::compare_xy(q, r) >= 0) return Location::boundary;
-      // Crossing number with the ray to +x: edges whose y-span holds q's y, half-open.
-      const bool p_above = G::compare_y(p, q) > 0, r_above = G::compare_y(r, q) > 0;
-      if (p_above != r_above && (r_above ? o > 0 : o < 0)) inside = !inside;
-    }
-    return inside ? Location::inside : Location::outside;
-  };
-  const Location outer = in_contour(polygon.outer);
-  if (outer != Location::inside) return outer;
-  for (const auto& h : polygon.holes) {
-    const Location l = in_contour(h);
-    if (l == Location::boundary) return l;
-    if (l == Location::inside) return Location::outside;
-  }
-  return Location::inside;
-}
-
 // Something that may cover a line over [lo, hi], f(t) = f0 + t (f1 - f0) nearer than the line.
 template <class K>
 struct Occluder {
@@ -145,6 +116,46 @@ template <class FT>
 void sort_unique(std::vector<FT>& ts) {
   std::sort(ts.begin(), ts.end());
   ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+}
+
+// The t-intervals where the line runs inside the polygon: in its closure (`closed`) or in its
+// interior, joined where they meet, and with `unit` only within [0, 1]. They are bounded by the
+// polygon's corners on the line and by the line's crossings with the line each crossing edge lies
+// on, which `edge_line(contour, i)` gives as two points (the support line, for rule 3).
+template <class K, class EdgeLine>
+std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> inside_intervals(
+    const ImageLine<K>& line, const clip::Polygon<K>& polygon, EdgeLine&& edge_line, bool closed, bool unit) {
+  using G = Geometry<K>;
+  using FT = typename G::FT;
+  std::vector<FT> ts;
+  if (unit) ts = {FT(0), FT(1)};
+  auto add = [&](const FT& t) {
+    if (!unit || (FT(0) < t && t < FT(1))) ts.push_back(t);
+  };
+  auto scan = [&](const clip::Contour<K>& c) {
+    const std::size_t n = c.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto &p = c.points[i], &q = c.points[(i + 1) % n];
+      const int op = G::orientation(line.a, line.b, p), oq = G::orientation(line.a, line.b, q);
+      if (op == 0) {
+        add(line.param(p));
+      } else if (oq != 0 && op != oq) {
+        const auto [c0, c1] = edge_line(c, i);
+        add(line.param_of_crossing(c0, c1));
+      }
+    }
+  };
+  scan(polygon.outer);
+  for (const auto& h : polygon.holes) scan(h);
+  sort_unique(ts);
+  std::vector<std::pair<FT, FT>> out;
+  for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
+    const int side = clip::side_of_polygon(polygon, line.at((ts[i] + ts[i + 1]) / 2));
+    if (closed ? side < 0 : side <= 0) continue;
+    if (!out.empty() && out.back().second == ts[i]) out.back().second = ts[i + 1];
+    else out.emplace_back(ts[i], ts[i + 1]);
+  }
+  return out;
 }
 
 template <class K>
@@ -262,33 +273,11 @@ class Classifier {
 
   // The closed t-intervals, within [0, 1], where the line runs in the closure of the polygon.
   std::vector<std::pair<FT, FT>> closure_intervals(const ImageLine<K>& line, const clip::Polygon<K>& polygon) const {
-    std::vector<FT> ts{FT(0), FT(1)};
-    auto add = [&](const FT& t) {
-      if (FT(0) < t && t < FT(1)) ts.push_back(t);
+    auto support = [&](const clip::Contour<K>& c, std::size_t i) {
+      const auto& l = sources_.lines[c.lines[i]];  // rule 3: the support line, not the constructed edge
+      return std::pair<const P&, const P&>(l.a, l.b);
     };
-    auto scan = [&](const clip::Contour<K>& c) {
-      const std::size_t n = c.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        const P &p = c.points[i], &q = c.points[(i + 1) % n];
-        const int op = G::orientation(line.a, line.b, p), oq = G::orientation(line.a, line.b, q);
-        if (op == 0) add(line.param(p));
-        else if (oq != 0 && op != oq) {
-          // Rule 3: meet the edge's support line, not the constructed edge.
-          const auto& support = sources_.lines[c.lines[i]];
-          add(line.param_of_crossing(support.a, support.b));
-        }
-      }
-    };
-    scan(polygon.outer);
-    for (const auto& h : polygon.holes) scan(h);
-    sort_unique(ts);
-    std::vector<std::pair<FT, FT>> out;
-    for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
-      if (locate<K>(line.at((ts[i] + ts[i + 1]) / 2), polygon) == Location::outside) continue;
-      if (!out.empty() && out.back().second == ts[i]) out.back().second = ts[i + 1];
-      else out.emplace_back(ts[i], ts[i + 1]);
-    }
-    return out;
+    return inside_intervals(line, polygon, support, true, true);
   }
 
   const std::vector<Mesh>& meshes_;

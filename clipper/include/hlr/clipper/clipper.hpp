@@ -104,6 +104,10 @@ std::vector<ClipResult<K>> clip_list(std::span<const Polygon<K>> subjects, const
 template <class K>
 std::vector<Polygon<K>> merge_polygons(std::span<const Contour<K>> pieces, const LineTable<K>& lines);
 
+// Where q lies with respect to a polygon with holes: +1 inside, 0 on its boundary, -1 outside.
+template <class K>
+int side_of_polygon(const Polygon<K>& polygon, const typename Geometry<K>::Point& q);
+
 // Exact signed area of a contour (twice the area, to stay in the ring of the coordinates) and of a
 // polygon (outer minus holes). Positive for a counter-clockwise contour.
 template <class K>
@@ -121,6 +125,7 @@ typename Geometry<K>::FT twice_area(const Polygon<K>& polygon);
   EXTERN template std::vector<ClipResult<K>> clip_list<K>(std::span<const Polygon<K>>,               \
                                                           const ClipRegion<K>&);                     \
   EXTERN template std::vector<Polygon<K>> merge_polygons<K>(std::span<const Contour<K>>, const LineTable<K>&); \
+  EXTERN template int side_of_polygon<K>(const Polygon<K>&, const Geometry<K>::Point&);               \
   EXTERN template Geometry<K>::FT twice_signed_area<K>(const Contour<K>&);                           \
   EXTERN template Geometry<K>::FT twice_area<K>(const Polygon<K>&);
 

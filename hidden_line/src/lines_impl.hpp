@@ -165,16 +165,12 @@ class Classifier {
   using P = typename G::Point;
 
  public:
-  Classifier(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
-             const VisibilityMap<K>& map)
-      : meshes_(meshes), sources_(sources), map_(map), grid_(domain(map), map.visible.size()),
+  Classifier(const std::vector<Mesh>& meshes, const Sources<K>& sources, const VisibilityMap<K>& map)
+      : meshes_(meshes), sources_(sources), map_(map), view_points_(sources.view_points),
+        grid_(domain(map), map.visible.size()),
         edge_on_grid_(domain(map), std::max<std::size_t>(sources.edge_on_faces.size(), 1)) {
-    view_points_.resize(meshes.size());
     source_of_face_.resize(meshes.size());
-    for (std::size_t m = 0; m < meshes.size(); ++m) {
-      for (const auto& v : meshes[m].vertices) view_points_[m].push_back(frame.to_view(v));
-      source_of_face_[m].assign(meshes[m].faces.size(), -1);
-    }
+    for (std::size_t m = 0; m < meshes.size(); ++m) source_of_face_[m].assign(meshes[m].faces.size(), -1);
     for (std::size_t s = 0; s < sources.polygons.size(); ++s)
       for (std::uint32_t f : sources.polygons[s].faces) source_of_face_[sources.polygons[s].mesh][f] = std::int32_t(s);
     for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid_.insert(i, polygon_bbox(map.visible[i].polygon));
@@ -283,7 +279,7 @@ class Classifier {
   const std::vector<Mesh>& meshes_;
   const Sources<K>& sources_;
   const VisibilityMap<K>& map_;
-  std::vector<std::vector<ViewPoint<K>>> view_points_;
+  const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
   BoxGrid grid_, edge_on_grid_;
   std::vector<Occluder<K>> occluders_;
@@ -296,7 +292,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
                           const VisibilityMap<K>& map, const std::vector<IntersectionSegment>& intersections,
                           const LineOptions& options) {
   using FT = typename Geometry<K>::FT;
-  detail::Classifier<K> classifier(meshes, frame, sources, map);
+  detail::Classifier<K> classifier(meshes, sources, map);
   LineSet<K> out;
   std::vector<std::int32_t> own;
   auto add_own = [&](std::uint32_t mesh, const std::vector<std::uint32_t>& faces) {

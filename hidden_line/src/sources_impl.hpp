@@ -236,6 +236,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
         add_source(std::move(polygon), {f});
       }
     }
+    out.view_points.push_back(std::move(vp));
   }
   out.stats.sources = out.polygons.size();
   return out;

@@ -66,6 +66,7 @@ struct Sources {
   clip::LineTable<K> lines;
   std::vector<LineOrigin> line_origins;  // parallel to lines
   std::vector<std::array<std::uint32_t, 2>> edge_on_faces;  // (mesh, face) of the faces dropped edge-on
+  std::vector<std::vector<ViewPoint<K>>> view_points;        // per mesh, per input vertex
   SourceStats stats;
 };
 

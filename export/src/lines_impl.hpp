@@ -5,8 +5,7 @@
 
 namespace hlr::exporter {
 
-// Coordinates of the unnormalized frame are correctly rounded to double, then divided by the axis
-// scale (|X|, |Y|, |Z| are irrational in general, so this is the closest the output can be).
+// Coordinates are rounded by ViewFrame::rounded, as in hlr-surfaces/1.
 template <class K>
 LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, KernelKind kernel,
                          const hidden_line::LineSet<K>& lines,
@@ -18,11 +17,11 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   d.view = view_info(frame);
   d.kernel = kernel;
   d.stats = lines.stats;
-  auto round = [&](const FT& value, int axis) { return G::to_double(value) / frame.scale(axis) + 0.0; };  // no -0
   for (const auto& line : lines.lines) {
     auto at = [&](const FT& t) -> Point3 {
-      return {round(line.a.x + t * (line.b.x - line.a.x), 0), round(line.a.y + t * (line.b.y - line.a.y), 1),
-              round(line.a.z + t * (line.b.z - line.a.z), 2)};
+      return {frame.rounded(line.a.x + t * (line.b.x - line.a.x), 0),
+              frame.rounded(line.a.y + t * (line.b.y - line.a.y), 1),
+              frame.rounded(line.a.z + t * (line.b.z - line.a.z), 2)};
     };
     for (const auto& piece : line.pieces) {
       DrawingPiece p;
@@ -37,7 +36,9 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
     }
   }
   for (const auto& s : segments)
-    d.segments.push_back({{round(G::x(s.a), 0), round(G::y(s.a), 1)}, {round(G::x(s.b), 0), round(G::y(s.b), 1)}, s.visible});
+    d.segments.push_back({{frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)},
+                          {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)},
+                          s.visible});
   return d;
 }
 

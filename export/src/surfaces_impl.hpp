@@ -21,8 +21,8 @@ using nlohmann::json;
 template <class K>
 struct Rounder {
   const ViewFrame<K>& frame;
-  double x(const typename Geometry<K>::Point& p) const { return Geometry<K>::to_double(Geometry<K>::x(p)) / frame.scale(0); }
-  double y(const typename Geometry<K>::Point& p) const { return Geometry<K>::to_double(Geometry<K>::y(p)) / frame.scale(1); }
+  double x(const typename Geometry<K>::Point& p) const { return frame.rounded(Geometry<K>::x(p), 0); }
+  double y(const typename Geometry<K>::Point& p) const { return frame.rounded(Geometry<K>::y(p), 1); }
 };
 
 template <class K>

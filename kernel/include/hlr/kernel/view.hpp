@@ -99,6 +99,10 @@ class ViewFrame {
 
   // |X|, |Y|, |Z| in double: divide a view coordinate by these to get model units.
   double scale(int axis) const { return scale_[axis]; }
+  // A view coordinate as output writes it: in model units, the exact value correctly rounded to
+  // double, then divided by the axis scale (irrational in general, so this is as close as output
+  // gets); never -0.
+  double rounded(const FT& value, int axis) const { return Geometry<K>::to_double(value) / scale_[axis] + 0.0; }
   const View& view() const { return view_; }
 
   // The orthonormal frame in double, row-major 4x4 (the JSON's world_to_view).

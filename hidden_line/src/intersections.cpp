@@ -32,6 +32,13 @@ struct FaceRef {
 
 using Interval = std::pair<FT, FT>;
 
+// An input vertex as a point of Kernel: IK for predicates on the input doubles, EK to construct.
+template <class Kernel>
+typename Kernel::Point_3 input_point(const Mesh& mesh, std::uint32_t v) {
+  const auto& c = mesh.vertices[v];
+  return typename Kernel::Point_3(c[0], c[1], c[2]);
+}
+
 // The open intervals of parameters t for which p + t d lies in the relative interior of the face,
 // with intervals that meet at a point joined (the line runs on through a corner or along a
 // internal boundary point of the face).
@@ -47,21 +54,13 @@ std::vector<Interval> interior_intervals(const Mesh& mesh, const std::vector<std
   const int u = (drop + 1) % 3, v = (drop + 2) % 3;
   auto project = [&](const EK::Point_3& q) { return EK::Point_2(q[u], q[v]); };
   clip::Polygon<EK> polygon;
-  for (std::uint32_t vi : face) {
-    const auto& c = mesh.vertices[vi];
-    polygon.outer.points.push_back(project(EK::Point_3(c[0], c[1], c[2])));
-  }
+  for (std::uint32_t vi : face) polygon.outer.points.push_back(project(input_point<EK>(mesh, vi)));
   // The image of p + t d has parameter t along the image line.
   const detail::ImageLine<EK> line(project(p), project(p + d));
   auto edge = [](const clip::Contour<EK>& c, std::size_t i) {
     return std::pair<const EK::Point_2&, const EK::Point_2&>(c.points[i], c.points[(i + 1) % c.size()]);
   };
   return detail::inside_intervals(line, polygon, edge, false, false);
-}
-
-EK::Point_3 input_point(const Mesh& mesh, std::uint32_t v) {
-  const auto& c = mesh.vertices[v];
-  return EK::Point_3(c[0], c[1], c[2]);
 }
 
 // Whether face g has corners strictly on both sides of the plane of face f. Corners g shares with f
@@ -72,8 +71,7 @@ bool straddles(const Mesh& mesh_g, const std::vector<std::uint32_t>& g, const st
   bool below = false, above = false;
   for (std::uint32_t v : g) {
     if (f_corners && std::find(f_corners->begin(), f_corners->end(), v) != f_corners->end()) continue;
-    const auto& q = mesh_g.vertices[v];
-    const auto o = CGAL::orientation(a, b, c, IK::Point_3(q[0], q[1], q[2]));
+    const auto o = CGAL::orientation(a, b, c, input_point<IK>(mesh_g, v));
     below |= o == CGAL::NEGATIVE;
     above |= o == CGAL::POSITIVE;
   }
@@ -138,8 +136,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   }
 
   auto ipoint = [&](const FaceRef& r, int k) {
-    const auto& c = meshes[r.mesh].vertices[topo[r.mesh].plane_vertices[r.face][k]];
-    return IK::Point_3(c[0], c[1], c[2]);
+    return input_point<IK>(meshes[r.mesh], topo[r.mesh].plane_vertices[r.face][k]);
   };
   auto crosses = [&](const FaceRef& f, const FaceRef& g) {
     const auto& fc = meshes[f.mesh].faces[f.face];
@@ -165,10 +162,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
                                               m.vertices[gc[(j + 1) % 3]], m.vertices[gc[(j + 2) % 3]]);
             }
       }
-      auto corner = [&](const FaceRef& r, int k) {
-        const auto& c = meshes[r.mesh].vertices[meshes[r.mesh].faces[r.face][k]];
-        return IK::Point_3(c[0], c[1], c[2]);
-      };
+      auto corner = [&](const FaceRef& r, int k) { return input_point<IK>(meshes[r.mesh], meshes[r.mesh].faces[r.face][k]); };
       return CGAL::do_intersect(IK::Triangle_3(corner(f, 0), corner(f, 1), corner(f, 2)),
                                 IK::Triangle_3(corner(g, 0), corner(g, 1), corner(g, 2)));
     }
@@ -191,7 +185,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   auto plane_of = [&](const FaceRef& r) {
     const auto& pv = topo[r.mesh].plane_vertices[r.face];
     const Mesh& m = meshes[r.mesh];
-    return EK::Plane_3(input_point(m, pv[0]), input_point(m, pv[1]), input_point(m, pv[2]));
+    return EK::Plane_3(input_point<EK>(m, pv[0]), input_point<EK>(m, pv[1]), input_point<EK>(m, pv[2]));
   };
   for (const auto& [i, j] : pairs) {
     FaceRef f = faces[i], g = faces[j];

@@ -9,14 +9,16 @@ packages=(
   # libraries (DESIGN.md "Dependencies")
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libopenmesh-dev libglm-dev libtbb-dev libcli11-dev nlohmann-json3-dev
-  # DXF writer (export/)
-  libdxflib-dev
+  # DXF and PNG writers (export/)
+  libdxflib-dev libpng-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   # SVG read back in export/tests
   libexpat1-dev
   # output checkers (tests/tools/check_drawing.py: DXF audit, SVG rendering)
   python3-ezdxf librsvg2-bin
+  # the speed-versus-accuracy chart (bench/chart)
+  python3-matplotlib
   # peer in the clipper benchmark (Clipper 1, integer coordinates)
   libpolyclipping-dev
 )

@@ -1,11 +1,11 @@
-// `hlr draw MESH... --view V -o OUT.svg|OUT.dxf|OUT.json [--hidden dashed|none] [--crease DEG]
-//            [--sheet A4] [--scale 1:2] [--kernel exact|epick|double]`
+// `hlr draw MESH... --view V -o OUT.svg|OUT.dxf|OUT.json|OUT.png [--hidden dashed|none] [--crease DEG]
+//            [--sheet A4] [--scale 1:2] [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "scene_options.hpp"
+#include "line_runs.hpp"
 #include "subcommand.hpp"
 
-#include <hlr/export/lines.hpp>
+#include <hlr/export/check.hpp>
 
 #include <charconv>
 #include <cmath>
@@ -23,15 +23,18 @@ struct DrawOptions {
   std::string sheet = "A4";
   std::string scale;
   bool no_intersections = false;
+  int raster = 0;  // pixels; 0: the exact path (or --kernel)
+  std::string dash = "arc";
 };
 
-enum class Format { json, svg, dxf };
+enum class Format { json, svg, dxf, png };
 
 Format format_of(const std::string& path) {
   if (has_extension(path, ".json")) return Format::json;
   if (has_extension(path, ".svg")) return Format::svg;
   if (has_extension(path, ".dxf")) return Format::dxf;
-  throw UserError(path, "unknown output format (the name must end in .svg, .dxf or .json)");
+  if (has_extension(path, ".png")) return Format::png;
+  throw UserError(path, "unknown output format (the name must end in .svg, .dxf, .json or .png)");
 }
 
 // "1:2" (drawing : model), "2:1", or a plain factor "0.5".
@@ -52,83 +55,62 @@ std::optional<double> parse_scale(const std::string& text) {
   return scale;
 }
 
-// Stage lines on stderr once a run is long enough for a person to wonder.
-struct Progress {
-  bool on;
-  void stage(const std::string& what) const {
-    if (on) std::cerr << "hlr draw: " << what << '\n';
-  }
-};
-
-template <class K>
-int solve(const DrawOptions& options, const View& view, KernelKind kind, const exporter::DrawingStyle& style) {
+int solve(const DrawOptions& options, const View& view, const exporter::DrawingStyle& style) {
   const auto start = std::chrono::steady_clock::now();
+  KernelKind kind = KernelKind::exact;
+  parse_kernel_kind(options.scene.kernel, kind);
   // Every output is checked and opened before the work starts, and all are committed together at
   // the end: a bad path fails fast, and a failed run leaves no output at all.
   std::vector<Format> formats;
-  for (const auto& out : options.outputs) formats.push_back(format_of(out));
+  for (const auto& out : options.outputs) {
+    formats.push_back(format_of(out));
+    if (formats.back() == Format::png && options.raster == 0)
+      throw UserError(out, "a PNG is drawn by the raster path: add --raster N (pixels, such as 2048)");
+  }
   std::vector<std::unique_ptr<AtomicFile>> files;
   for (const auto& out : options.outputs) files.push_back(std::make_unique<AtomicFile>(out));
 
-  const auto [meshes, input] = load_scene(options.scene.meshes);
-  exporter::StageTimes times;
-  times.read = seconds_since(start);
-  const Progress progress{input.faces >= 10000};
-  progress.stage(std::to_string(input.faces) + " faces read; building polygons");
-
-  const ViewFrame<K> frame(view);
-  auto mark = std::chrono::steady_clock::now();
-  hidden_line::LineSet<K> lines;
-  std::vector<hidden_line::DrawnSegment<K>> segments;
-  hidden_line::AreaSortStats sort_stats;
-  try {
-    hidden_line::Sources<K> sources = hidden_line::build_sources<K>(meshes, frame);
-    times.sources = seconds_since(mark);
-    progress.stage("sorting " + std::to_string(sources.polygons.size()) + " polygons");
-    mark = std::chrono::steady_clock::now();
-    const hidden_line::VisibilityMap<K> map = hidden_line::area_sort<K>(sources);
-    sort_stats = map.stats;
-    times.sort = seconds_since(mark);
-    progress.stage("classifying feature lines");
-    mark = std::chrono::steady_clock::now();
-    hidden_line::LineOptions line_options;
-    line_options.features.crease_degrees = options.crease;
-    line_options.intersections = !options.no_intersections;
-    const auto intersections = line_options.intersections ? hidden_line::intersection_lines(meshes)
-                                                          : std::vector<hidden_line::IntersectionSegment>{};
-    times.intersections = seconds_since(mark);
-    mark = std::chrono::steady_clock::now();
-    lines = hidden_line::classify_lines<K>(meshes, frame, sources, map, intersections, line_options);
-    times.lines = seconds_since(mark);
-    mark = std::chrono::steady_clock::now();
-    segments = hidden_line::drawing_segments<K>(lines);
-    times.precedence = seconds_since(mark);
-  } catch (const clip::ClipError& e) {
-    throw inexact_kernel_failure(options.scene, kind, e);
+  const Scene scene = load_scene(options.scene.meshes);
+  const double read = seconds_since(start);
+  LineRunSettings settings;
+  settings.crease = options.crease;
+  settings.intersections = !options.no_intersections;
+  settings.progress = scene.input.faces >= 10000;
+  const Intersections intersections = find_intersections(scene, settings);
+  RasterRun raster;
+  exporter::LineDrawing drawing;
+  if (options.raster > 0) {
+    raster = raster_drawing(scene, view, options.raster, intersections, settings);
+    drawing = std::move(raster.drawing);
+  } else {
+    drawing = kernel_drawing(options.scene, scene, view, kind, intersections, settings);
   }
-  times.total = seconds_since(start);
-
-  exporter::LineDrawing drawing = exporter::make_drawing<K>(input, frame, kind, lines, segments);
-  drawing.crease_degrees = options.crease;
-  drawing.times = times;
+  drawing.times.read = read;
+  drawing.times.total += read;
   for (std::size_t i = 0; i < files.size(); ++i) {
     switch (formats[i]) {
       case Format::json: files[i]->write(exporter::lines_json(drawing)); break;
       case Format::svg: files[i]->write(exporter::lines_svg(drawing, style)); break;
       case Format::dxf: files[i]->write(exporter::lines_dxf(drawing, style)); break;
+      case Format::png:
+        files[i]->write(exporter::png_document(raster.raster->pbuffer(
+            options.dash == "paper" ? hidden_line::DashPattern::paper : hidden_line::DashPattern::arc_length)));
+        break;
     }
   }
   for (auto& file : files) file->commit();
 
-  const auto& st = lines.stats;
+  const auto& st = drawing.stats;
   auto kind_count = [&](FeatureKind k) { return st.by_kind[static_cast<int>(k)]; };
-  std::cout << "hlr draw: " << input.faces << " faces, view " << view.name << ", kernel " << kernel_name(kind) << '\n'
+  const std::string method =
+      options.raster > 0 ? "raster " + std::to_string(options.raster) + " px" : "kernel " + std::string(kernel_name(kind));
+  std::cout << "hlr draw: " << scene.input.faces << " faces, view " << view.name << ", " << method << '\n'
             << "  " << st.lines << " feature lines (" << kind_count(FeatureKind::silhouette) << " silhouette, "
             << kind_count(FeatureKind::crease) << " crease, " << kind_count(FeatureKind::boundary) << " boundary, "
             << kind_count(FeatureKind::group) << " group, " << kind_count(FeatureKind::intersection)
             << " intersection)\n"
-            << "  " << st.visible_pieces << " visible and " << st.hidden_pieces << " hidden pieces in " << times.total
-            << " s\n";
+            << "  " << st.visible_pieces << " visible and " << st.hidden_pieces << " hidden pieces in "
+            << drawing.times.total << " s\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
   return kExitOk;
 }
@@ -152,7 +134,13 @@ int run(const DrawOptions& options) {
     }
   }
   style.hidden = options.hidden == "dashed";
-  return with_kernel(options.scene, [&]<class K>(KernelKind kind) { return solve<K>(options, *view, kind, style); });
+  if (options.raster > 0 && options.scene.kernel != "exact") {
+    std::cerr << "hlr: --raster and --kernel " << options.scene.kernel
+              << " exclude each other (the raster path decides visibility by depth tests, not by a kernel)"
+              << std::endl;
+    return kExitUsage;
+  }
+  return solve(options, *view, style);
 }
 
 }  // namespace
@@ -182,9 +170,21 @@ Subcommand add_draw_command(CLI::App& parent) {
                   "drawing scale such as 1:2 or 5:1 (default: the largest ISO 5455 scale that fits the sheet)")
       ->type_name("SCALE");
   cmd->add_flag("--no-intersections", options->no_intersections, "do not draw lines where faces penetrate");
+  cmd->add_option("--raster", options->raster,
+                  "decide visibility in image space instead (the P-buffer path, inexact): a Z-buffer N pixels "
+                  "along the longer side; needed for .png output")
+      ->check(CLI::Range(16, 8192))
+      ->type_name("N");
+  cmd->add_option("--dash", options->dash,
+                  "hidden-line dashes in the PNG: arc (by arc length along each line) or paper (the P-buffer "
+                  "paper's 8x8 screen pattern, which breaks up on diagonal lines)")
+      ->check(CLI::IsMember({"arc", "paper"}))
+      ->capture_default_str()
+      ->type_name("STYLE");
   cmd->footer(
       "Example:\n"
       "  hlr draw fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg -o out/bracket.dxf\n"
+      "  hlr draw fixtures/parts/anchor.off --view iso --raster 2048 -o out/anchor.png\n"
       "\n"
       "Feature lines are boundary, crease, silhouette, group and intersection lines; each is split into\n"
       "visible and hidden pieces exactly. Model units are taken as millimetres. Formats: docs/FORMATS.md.");

@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
 
   std::vector<Subcommand> commands;
   commands.push_back(add_draw_command(app));
+  commands.push_back(add_check_command(app));
   commands.push_back(add_surfaces_command(app));
   commands.push_back(add_clip_command(app));
 

@@ -8,7 +8,7 @@
 
 namespace hlr::app {
 
-void add_scene_options(CLI::App& cmd, SceneOptions& options) {
+void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel) {
   cmd.add_option("meshes", options.meshes, "mesh files (OFF, OBJ, STL, PLY), drawn together as one scene")
       ->required()
       ->type_name("MESH...");
@@ -25,7 +25,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& options) {
       ->expected(3)
       ->needs(dir)
       ->type_name("X,Y,Z");
-  add_kernel_option(cmd, options.kernel);
+  if (kernel) add_kernel_option(cmd, options.kernel);
 }
 
 std::optional<View> resolve_view(const SceneOptions& options) {

@@ -23,8 +23,8 @@ struct SceneOptions {
   std::string kernel = "exact";
 };
 
-// MESH... (positional), --view, --dir, --up and --kernel.
-void add_scene_options(CLI::App& cmd, SceneOptions& options);
+// MESH... (positional), --view, --dir, --up and, unless `kernel` is false, --kernel.
+void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel = true);
 
 // The view the options name, or nothing after a one-line usage error on stderr.
 std::optional<View> resolve_view(const SceneOptions& options);

@@ -1,8 +1,23 @@
-// The kernel-dependent writers (surfaces, and the rounding of line drawings) instantiated for DoubleKernel.
+// The kernel-dependent writers (surfaces, and the rounding of line drawings) instantiated for
+// DoubleKernel, and the raster path's drawing (its lines are on DoubleKernel).
 #include "lines_impl.hpp"
 #include "surfaces_impl.hpp"
 
 namespace hlr::exporter {
 HLR_EXPORT_SURFACES_DECLARE(hlr::DoubleKernel, )
 HLR_EXPORT_LINES_DECLARE(hlr::DoubleKernel, )
+
+LineDrawing make_raster_drawing(const InputInfo& input, const hidden_line::RasterDrawing& raster,
+                                const hidden_line::LineSet<DoubleKernel>& lines, int resolution) {
+  std::vector<hidden_line::DrawnSegment<DoubleKernel>> segments;
+  for (const auto& line : lines.lines)
+    for (const auto& piece : line.pieces) {
+      auto at = [&](double t) { return DoublePoint{line.a.x + t * (line.b.x - line.a.x), line.a.y + t * (line.b.y - line.a.y)}; };
+      segments.push_back({at(piece.t0), at(piece.t1), piece.visible});
+    }
+  LineDrawing drawing = make_drawing<DoubleKernel>(input, raster.frame(), KernelKind::floating, lines, segments);
+  const hidden_line::RasterGrid& grid = raster.grid();
+  drawing.raster = RasterInfo{resolution, grid.width, grid.height, grid.pixel};
+  return drawing;
+}
 }  // namespace hlr::exporter

@@ -17,7 +17,8 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   d.view = view_info(frame);
   d.kernel = kernel;
   d.stats = lines.stats;
-  for (const auto& line : lines.lines) {
+  for (std::uint32_t index = 0; index < lines.lines.size(); ++index) {
+    const auto& line = lines.lines[index];
     auto at = [&](const FT& t) -> Point3 {
       return {frame.rounded(line.a.x + t * (line.b.x - line.a.x), 0),
               frame.rounded(line.a.y + t * (line.b.y - line.a.y), 1),
@@ -32,6 +33,9 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
       p.mesh = line.mesh;
       p.has_edge = line.kind != FeatureKind::intersection;
       p.edge = {line.v0, line.v1};
+      p.line = index;
+      p.t0 = Geometry<K>::to_double(piece.t0);
+      p.t1 = Geometry<K>::to_double(piece.t1);
       d.pieces.push_back(p);
     }
   }

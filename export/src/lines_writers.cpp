@@ -240,7 +240,8 @@ void svg_title_block(std::ostringstream& out, const LineDrawing& drawing, const 
   cell(t.x0, t.y0, t.width(), "Files", files);
   cell(t.x0, t.y0 + title_row, view_width, "View", view);
   cell(t.x0 + view_width, t.y0 + title_row, scale_width, "Scale", scale_label(scale));
-  cell(t.x0 + view_width + scale_width, t.y0 + title_row, t.width() - view_width - scale_width, "Drawn by", "hlr");
+  cell(t.x0 + view_width + scale_width, t.y0 + title_row, t.width() - view_width - scale_width, "Drawn by",
+       drawing.raster ? "hlr, raster " + std::to_string(drawing.raster->resolution) + " px" : std::string("hlr"));
   out << "</g>\n";
 }
 
@@ -340,7 +341,10 @@ std::string lines_json(const LineDrawing& drawing) {
   out["format"] = "hlr-lines/1";
   out["input"] = detail::input_json(drawing.input);
   out["view"] = detail::view_json(drawing.view);
-  out["kernel"] = kernel_name(drawing.kernel);  // top level, as in hlr-clip/1 and hlr-surfaces/1
+  // top level, as in hlr-clip/1 and hlr-surfaces/1
+  out["kernel"] = drawing.raster ? "raster" : kernel_name(drawing.kernel);
+  if (const auto& r = drawing.raster)
+    out["raster"] = {{"resolution", r->resolution}, {"width", r->width}, {"height", r->height}, {"pixel", r->pixel}};
 
   json lines = json::array();
   for (const auto& p : drawing.pieces) {
@@ -365,11 +369,14 @@ std::string lines_json(const LineDrawing& drawing) {
                     FeatureKind::group})
     by_kind[feature_kind_name(kind)] = s.by_kind[static_cast<std::size_t>(kind)];
   const StageTimes& t = drawing.times;
+  const json stages =
+      drawing.raster ? json{{"read", t.read}, {"intersections", t.intersections}, {"zbuffer", drawing.zbuffer_seconds},
+                            {"lines", t.lines}}
+                     : json{{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"intersections", t.intersections},
+                            {"lines", t.lines}, {"precedence", t.precedence}};
   out["stats"] = {
       {"seconds", t.total},
-      {"stage_seconds",
-       {{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"intersections", t.intersections},
-        {"lines", t.lines}, {"precedence", t.precedence}}},
+      {"stage_seconds", stages},
       {"lines", s.lines},
       {"lines_by_kind", std::move(by_kind)},
       {"lines_seen_end_on", s.point_in_view},

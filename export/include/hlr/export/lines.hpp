@@ -14,6 +14,7 @@
 
 #include <hlr/export/surfaces.hpp>
 #include <hlr/hidden_line/lines.hpp>
+#include <hlr/hidden_line/raster.hpp>
 
 #include <array>
 #include <optional>
@@ -33,6 +34,8 @@ struct DrawingPiece {
   std::uint32_t mesh = 0;
   bool has_edge = false;  // false for intersection lines (JSON "edge": null)
   std::array<std::uint32_t, 2> edge{};
+  std::uint32_t line = 0;  // index of its line in the LineSet (lines seen end-on have no piece)
+  double t0 = 0, t1 = 1;   // its span along that line, rounded
 };
 
 // A segment the drawing shows, after precedence (in model units).
@@ -41,15 +44,23 @@ struct DrawingSegment {
   bool visible = true;
 };
 
+// Set when a drawing comes from the raster path (hidden_line/raster.hpp) instead of a kernel.
+struct RasterInfo {
+  int resolution = 0, width = 0, height = 0;
+  double pixel = 0;  // model units per pixel
+};
+
 struct LineDrawing {
   InputInfo input;
   ViewInfo view;
   KernelKind kernel = KernelKind::exact;
+  std::optional<RasterInfo> raster;      // JSON "kernel": "raster" and a "raster" object
   std::vector<DrawingPiece> pieces;      // JSON: every piece
   std::vector<DrawingSegment> segments;  // SVG and DXF
   hidden_line::LineStats stats;
   double crease_degrees = 30;
   StageTimes times;
+  double zbuffer_seconds = 0;  // raster path: building the Z-buffer
   // Total image-plane length of `segments` (what a drawing shows), visible and hidden, model units.
   double visible_length() const { return length(true); }
   double hidden_length() const { return length(false); }
@@ -62,6 +73,11 @@ template <class K>
 LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, KernelKind kernel,
                          const hidden_line::LineSet<K>& lines,
                          const std::vector<hidden_line::DrawnSegment<K>>& segments);
+
+// The raster path's drawing: every piece is drawn as it is (no precedence step; the raster
+// classification decides one class per pixel step).
+LineDrawing make_raster_drawing(const InputInfo& input, const hidden_line::RasterDrawing& raster,
+                                const hidden_line::LineSet<DoubleKernel>& lines, int resolution);
 
 // Sheet sizes after ISO 216, landscape.
 struct Sheet {

@@ -1,0 +1,186 @@
+// `hlr check MESH... --view V [--raster N,...] [--kernels epick,double] [--diff OUT.png] [--json OUT.json]`
+//
+// Draws the scene exactly, then by every method asked for, and reports how each one classifies
+// the same lines: the fraction of line length classified alike, and the pieces that differ.
+// The exact drawing is the reference (docs/STABILITY.md says why, case by case).
+#include "atomic_file.hpp"
+#include "errors.hpp"
+#include "line_runs.hpp"
+#include "subcommand.hpp"
+
+#include <hlr/export/check.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace hlr::app {
+namespace {
+
+struct CheckOptions {
+  SceneOptions scene;
+  std::vector<int> rasters;
+  std::vector<std::string> kernels;
+  std::string diff, json;
+  double crease = 30;
+  bool no_intersections = false;
+};
+
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4f%%", 100 * fraction);
+  return text;
+}
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+int run(CheckOptions options) {
+  const std::optional<View> view = resolve_view(options.scene);
+  if (!view) return kExitUsage;
+  if (options.rasters.empty() && options.kernels.empty()) options.rasters = {1024};
+  if (!options.diff.empty() && options.rasters.size() + options.kernels.size() != 1) {
+    std::cerr << "hlr: --diff draws one comparison: give one method (one --raster N or one --kernels K)" << std::endl;
+    return kExitUsage;
+  }
+  std::unique_ptr<AtomicFile> diff_file, json_file;
+  if (!options.diff.empty()) {
+    if (!has_extension(options.diff, ".png")) throw UserError(options.diff, "the difference image must be a .png");
+    diff_file = std::make_unique<AtomicFile>(options.diff);
+  }
+  if (!options.json.empty()) {
+    if (!has_extension(options.json, ".json")) throw UserError(options.json, "the report must be a .json");
+    json_file = std::make_unique<AtomicFile>(options.json);
+  }
+
+  const Scene scene = load_scene(options.scene.meshes);
+  LineRunSettings settings;
+  settings.crease = options.crease;
+  settings.intersections = !options.no_intersections;
+  settings.progress = scene.input.faces >= 10000;
+  const Intersections intersections = find_intersections(scene, settings);
+  const exporter::LineDrawing reference =
+      kernel_drawing(options.scene, scene, *view, KernelKind::exact, intersections, settings);
+
+  exporter::CheckReport report;
+  report.input = scene.input;
+  report.view = reference.view;
+  report.reference_seconds = reference.times.total;
+  report.reference_visible_length = reference.visible_length();
+  report.reference_hidden_length = reference.hidden_length();
+  const int image_resolution = options.rasters.empty() ? 1024 : options.rasters.front();
+  for (const std::string& name : options.kernels) {
+    exporter::CheckedMethod m;
+    m.method = name;
+    KernelKind kind = KernelKind::exact;
+    parse_kernel_kind(name, kind);
+    try {
+      const exporter::LineDrawing drawing = kernel_drawing(options.scene, scene, *view, kind, intersections, settings);
+      m.seconds = drawing.times.total;
+      m.agreement = exporter::compare_drawings(reference, drawing);
+    } catch (const UserError& e) {  // the kernel's own failure is a finding, not an error of the check
+      m.failure = e.what();
+    }
+    report.methods.push_back(std::move(m));
+  }
+  for (int resolution : options.rasters) {
+    exporter::CheckedMethod m;
+    m.method = "raster";
+    m.resolution = resolution;
+    const RasterRun run = raster_drawing(scene, *view, resolution, intersections, settings);
+    m.seconds = run.drawing.times.total;
+    m.agreement = exporter::compare_drawings(reference, run.drawing);
+    report.methods.push_back(std::move(m));
+  }
+
+  if (diff_file) {
+    const auto& agreement = report.methods.front().agreement;
+    diff_file->write(exporter::png_document(exporter::difference_image(reference, agreement, image_resolution)));
+  }
+  if (json_file) json_file->write(exporter::check_json(report));
+  if (diff_file) diff_file->commit();
+  if (json_file) json_file->commit();
+
+  std::cout << "hlr check: " << scene.input.faces << " faces, view " << view->name << ", " << reference.stats.lines
+            << " lines, " << number(reference.visible_length() + reference.hidden_length())
+            << " drawn length; exact in " << number(report.reference_seconds) << " s\n";
+  const exporter::CheckedMethod* worst = nullptr;
+  for (const exporter::CheckedMethod& m : report.methods) {
+    const auto& a = m.agreement;
+    std::cout << "  " << m.name() << ": ";
+    if (!m.failure.empty()) {
+      std::cout << "failed: " << m.failure << '\n';
+    } else if (!a.invalid.empty()) {
+      std::cout << "invalid result: " << a.invalid << '\n';
+    } else {
+      using exporter::Difference;
+      std::cout << percent(a.fraction()) << " of " << number(a.total_length) << " line length alike in "
+                << number(m.seconds) << " s; " << a.pieces.size() << " pieces differ: "
+                << a.count(Difference::hidden_in_candidate) << " hidden that are visible ("
+                << number(a.length(Difference::hidden_in_candidate)) << "), "
+                << a.count(Difference::visible_in_candidate) << " visible that are hidden ("
+                << number(a.length(Difference::visible_in_candidate)) << "), "
+                << a.count(Difference::missing_in_candidate) << " missing ("
+                << number(a.length(Difference::missing_in_candidate)) << ")\n";
+    }
+    auto score = [](const exporter::CheckedMethod& c) {
+      return c.failure.empty() && c.agreement.invalid.empty() ? c.agreement.fraction() : -1.0;
+    };
+    if (!worst || score(m) < score(*worst)) worst = &m;
+  }
+  if (diff_file) std::cout << "wrote " << options.diff << '\n';
+  if (json_file) std::cout << "wrote " << options.json << '\n';
+  // The summary: the method that agrees least.
+  std::cout << "check: ";
+  if (!worst->failure.empty())
+    std::cout << worst->name() << " failed";
+  else if (!worst->agreement.invalid.empty())
+    std::cout << worst->name() << " gave an invalid result";
+  else
+    std::cout << worst->name() << " classifies " << percent(worst->agreement.fraction())
+              << " of the line length as the exact path does (" << worst->agreement.pieces.size()
+              << " pieces differ, length " << number(worst->agreement.total_length - worst->agreement.agreeing_length)
+              << ")";
+  if (report.methods.size() > 1) std::cout << "; the least of " << report.methods.size() << " methods";
+  std::cout << std::endl;
+  return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_check_command(CLI::App& parent) {
+  auto options = std::make_shared<CheckOptions>();
+  CLI::App* cmd = parent.add_subcommand(
+      "check", "Compare the exact drawing with the raster path (or an inexact kernel) on the same lines.");
+  add_scene_options(*cmd, options->scene, /*kernel=*/false);
+  cmd->add_option("--raster", options->rasters, "raster resolutions to check, in pixels (default 1024)")
+      ->delimiter(',')
+      ->check(CLI::Range(16, 8192))
+      ->type_name("N,...");
+  cmd->add_option("--kernels", options->kernels, "inexact kernels to check as well: epick, double")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"epick", "double"}))
+      ->type_name("K,...");
+  cmd->add_option("--diff", options->diff,
+                  "PNG of the exact drawing with the differences over it: red where the method hides a "
+                  "visible line, blue where it shows a hidden one, orange where it has none")
+      ->type_name("OUT.png");
+  cmd->add_option("--json", options->json, "the report as hlr-check/1 JSON (docs/FORMATS.md)")->type_name("OUT.json");
+  cmd->add_option("--crease", options->crease, "an edge is a crease when its faces meet at more than DEG degrees")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str()
+      ->type_name("DEG");
+  cmd->add_flag("--no-intersections", options->no_intersections, "leave out the lines where faces penetrate");
+  cmd->footer(
+      "Example:\n"
+      "  hlr check fixtures/parts/anchor.off --view iso --raster 2048 --diff out/anchor_check.png\n"
+      "\n"
+      "The last line is the summary. The exit status is 0 whatever the agreement; it is not 0 only on an\n"
+      "error (a bad mesh, an unwritable output, a bad option).");
+  return {cmd, [options] { return run(*options); }};
+}
+
+}  // namespace hlr::app

@@ -1,0 +1,98 @@
+#include "line_runs.hpp"
+
+#include <iostream>
+
+namespace hlr::app {
+namespace {
+
+void stage(const LineRunSettings& settings, const std::string& what) {
+  if (settings.progress) std::cerr << "hlr: " << what << '\n';
+}
+
+hidden_line::LineOptions line_options(const LineRunSettings& settings) {
+  hidden_line::LineOptions options;
+  options.features.crease_degrees = settings.crease;
+  options.intersections = settings.intersections;
+  return options;
+}
+
+template <class K>
+exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kind, const Intersections& intersections,
+                            const LineRunSettings& settings) {
+  const ViewFrame<K> frame(view);
+  exporter::StageTimes times;
+  times.intersections = intersections.seconds;
+  auto mark = std::chrono::steady_clock::now();
+  stage(settings, std::to_string(scene.input.faces) + " faces; building polygons (" + kernel_name(kind) + ")");
+  hidden_line::Sources<K> sources = hidden_line::build_sources<K>(scene.meshes, frame);
+  times.sources = seconds_since(mark);
+  stage(settings, "sorting " + std::to_string(sources.polygons.size()) + " polygons");
+  mark = std::chrono::steady_clock::now();
+  const hidden_line::VisibilityMap<K> map = hidden_line::area_sort<K>(sources);
+  times.sort = seconds_since(mark);
+  stage(settings, "classifying feature lines");
+  mark = std::chrono::steady_clock::now();
+  const hidden_line::LineSet<K> lines =
+      hidden_line::classify_lines<K>(scene.meshes, frame, sources, map, intersections.segments, line_options(settings));
+  times.lines = seconds_since(mark);
+  mark = std::chrono::steady_clock::now();
+  const auto segments = hidden_line::drawing_segments<K>(lines);
+  times.precedence = seconds_since(mark);
+  times.total = times.intersections + times.sources + times.sort + times.lines + times.precedence;
+
+  exporter::LineDrawing drawing = exporter::make_drawing<K>(scene.input, frame, kind, lines, segments);
+  drawing.crease_degrees = settings.crease;
+  drawing.times = times;
+  return drawing;
+}
+
+}  // namespace
+
+Intersections find_intersections(const Scene& scene, const LineRunSettings& settings) {
+  Intersections out;
+  if (!settings.intersections) return out;
+  stage(settings, "finding where faces penetrate");
+  const auto start = std::chrono::steady_clock::now();
+  out.segments = hidden_line::intersection_lines(scene.meshes);
+  out.seconds = seconds_since(start);
+  return out;
+}
+
+exporter::LineDrawing kernel_drawing(const SceneOptions& options, const Scene& scene, const View& view, KernelKind kind,
+                                     const Intersections& intersections, const LineRunSettings& settings) {
+  try {
+    switch (kind) {
+      case KernelKind::epick: return solve<EpickKernel>(scene, view, kind, intersections, settings);
+      case KernelKind::floating: return solve<DoubleKernel>(scene, view, kind, intersections, settings);
+      case KernelKind::exact: break;
+    }
+    return solve<ExactKernel>(scene, view, kind, intersections, settings);
+  } catch (const clip::ClipError& e) {
+    throw inexact_kernel_failure(options, kind, e);
+  }
+}
+
+RasterRun raster_drawing(const Scene& scene, const View& view, int resolution, const Intersections& intersections,
+                         const LineRunSettings& settings) {
+  RasterRun run;
+  exporter::StageTimes times;
+  times.intersections = intersections.seconds;
+  stage(settings, "Z-buffer at " + std::to_string(resolution) + " pixels");
+  auto mark = std::chrono::steady_clock::now();
+  hidden_line::RasterOptions raster;
+  raster.resolution = resolution;
+  run.raster = std::make_unique<hidden_line::RasterDrawing>(scene.meshes, view, intersections.segments,
+                                                            line_options(settings), raster);
+  const double zbuffer = seconds_since(mark);
+  mark = std::chrono::steady_clock::now();
+  const hidden_line::LineSet<DoubleKernel> lines = run.raster->classify();
+  times.lines = seconds_since(mark);
+  times.total = times.intersections + zbuffer + times.lines;
+  run.drawing = exporter::make_raster_drawing(scene.input, *run.raster, lines, resolution);
+  run.drawing.crease_degrees = settings.crease;
+  run.drawing.times = times;
+  run.drawing.zbuffer_seconds = zbuffer;
+  return run;
+}
+
+}  // namespace hlr::app

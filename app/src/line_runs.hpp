@@ -1,0 +1,41 @@
+// The line drawing of a scene, by a kernel or by the raster path: what `hlr draw` and `hlr check`
+// both run. Times exclude reading the meshes.
+#pragma once
+
+#include "scene_options.hpp"
+
+#include <hlr/export/lines.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hlr::app {
+
+struct LineRunSettings {
+  double crease = 30;
+  bool intersections = true;
+  bool progress = false;  // stage lines on stderr
+};
+
+// The exact intersection segments of the scene, if the settings ask for them, and their time.
+struct Intersections {
+  std::vector<hidden_line::IntersectionSegment> segments;
+  double seconds = 0;
+};
+Intersections find_intersections(const Scene& scene, const LineRunSettings& settings);
+
+// The drawing by kernel `kind`; an inexact kernel's failure throws inexact_kernel_failure's
+// UserError naming `options.meshes`.
+exporter::LineDrawing kernel_drawing(const SceneOptions& options, const Scene& scene, const View& view, KernelKind kind,
+                                     const Intersections& intersections, const LineRunSettings& settings);
+
+// The raster path's drawing, and the RasterDrawing for images of it.
+struct RasterRun {
+  std::unique_ptr<hidden_line::RasterDrawing> raster;
+  exporter::LineDrawing drawing;
+};
+RasterRun raster_drawing(const Scene& scene, const View& view, int resolution, const Intersections& intersections,
+                         const LineRunSettings& settings);
+
+}  // namespace hlr::app

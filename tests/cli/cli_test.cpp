@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -832,6 +833,95 @@ TEST_F(CliDraw, NonManifoldMeshIsDrawnWithAWarning) {
   for (const auto& line : doc.at("lines"))
     shared_edge |= line.at("edge") == json({0, 1}) && line.at("kind") == "crease";
   EXPECT_TRUE(shared_edge) << "the non-manifold edge is a crease";
+}
+
+}  // namespace
+
+// ---- hlr draw --raster and hlr check --------------------------------------------------------------
+namespace {
+
+bool is_png(const std::string& bytes) { return bytes.rfind("\x89PNG\r\n\x1a\n", 0) == 0; }
+
+TEST_F(CliDraw, RasterDrawsPngAndLinesJson) {
+  const std::string mesh = (kScenes / "l_bracket.off").string();
+  for (const char* dash : {"arc", "paper"}) {
+    Outcome run = hlr({"draw", mesh, "--view", "iso", "--raster", "512", "--dash", dash, "-o", out("b.png").string(),
+                       "-o", out("b.json").string(), "-o", out("b.svg").string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_TRUE(is_png(slurp(out("b.png"))));
+    EXPECT_NE(run.out.find("raster 512 px"), std::string::npos) << run.out;
+  }
+  // The raster JSON holds the exact drawing's lines, in its order, with its own pieces.
+  Outcome exact = hlr({"draw", mesh, "--view", "iso", "-o", out("e.json").string()});
+  ASSERT_EQ(exact.exit_code, 0) << exact.err;
+  const json raster = json::parse(slurp(out("b.json")));
+  const json reference = json::parse(slurp(out("e.json")));
+  EXPECT_EQ(raster.at("format"), "hlr-lines/1");
+  EXPECT_EQ(raster.at("kernel"), "raster");
+  EXPECT_EQ(raster.at("raster").at("resolution"), 512);
+  EXPECT_EQ(raster.at("stats").at("lines"), reference.at("stats").at("lines"));
+  EXPECT_TRUE(raster.at("stats").at("stage_seconds").contains("zbuffer"));
+  std::set<std::vector<int>> edges_raster, edges_exact;
+  for (const auto& l : raster.at("lines")) edges_raster.insert(l.at("edge").get<std::vector<int>>());
+  for (const auto& l : reference.at("lines")) edges_exact.insert(l.at("edge").get<std::vector<int>>());
+  EXPECT_EQ(edges_raster, edges_exact);
+}
+
+TEST_F(CliDraw, RasterOptionMistakesAreErrors) {
+  const std::string cube = (kScenes / "cube.off").string();
+  // A PNG needs the raster path; --raster and an inexact kernel exclude each other; bad sizes.
+  expect_failure({cube, "-o", out("c.svg").string(), "-o", out("c.png").string()}, 1,
+                 "hlr: " + out("c.png").string() + ": a PNG is drawn by the raster path");
+  expect_failure({cube, "--raster", "256", "--kernel", "epick", "-o", out("c.png").string()}, 2, "hlr: --raster");
+  for (const char* bad : {"8", "100000", "big"}) expect_failure({cube, "--raster", bad, "-o", out("c.png").string()}, 2, "");
+  expect_failure({cube, "--raster", "256", "--dash", "dotted", "-o", out("c.png").string()}, 2, "");
+}
+
+class CliCheck : public CliDraw {};
+
+TEST_F(CliCheck, ReportsAgreementWithASummaryLineLast) {
+  const std::string mesh = (kScenes / "l_bracket.off").string();
+  Outcome run = hlr({"check", mesh, "--dir", "1,2,-3", "--raster", "256,1024", "--kernels", "epick,double", "--json",
+                     out("r.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  const std::string last = run.out.substr(run.out.rfind('\n', run.out.size() - 2) + 1);
+  EXPECT_EQ(last.rfind("check: ", 0), 0u) << run.out;
+  const json report = json::parse(slurp(out("r.json")));
+  EXPECT_EQ(report.at("format"), "hlr-check/1");
+  ASSERT_EQ(report.at("methods").size(), 4u);
+  std::vector<std::string> names;
+  for (const auto& m : report.at("methods")) {
+    names.push_back(m.at("method").get<std::string>() + (m.contains("resolution") ? std::to_string(m.at("resolution").get<int>()) : ""));
+    ASSERT_EQ(m.at("status"), "ok") << m;
+    const double fraction = m.at("agreement").at("fraction");
+    EXPECT_GT(fraction, 0.99) << m;  // a general view of a simple part: only pixel-size errors
+    EXPECT_LE(fraction, 1.0);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"epick", "double", "raster256", "raster1024"}));
+  // The inexact kernels agree exactly on this part and view; the finer raster agrees better.
+  EXPECT_EQ(report.at("methods").at(0).at("agreement").at("fraction"), 1.0);
+  EXPECT_GT(report.at("methods").at(3).at("agreement").at("fraction"),
+            report.at("methods").at(2).at("agreement").at("fraction"));
+}
+
+TEST_F(CliCheck, DiffImageAndErrors) {
+  const std::string mesh = (kScenes / "cube.off").string();
+  Outcome run = hlr({"check", mesh, "--view", "front", "--raster", "128", "--diff", out("d.png").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;  // disagreement is a finding, not an error
+  EXPECT_TRUE(is_png(slurp(out("d.png"))));
+  EXPECT_NE(run.out.find("wrote " + out("d.png").string()), std::string::npos);
+  // One comparison per image; a bad mesh leaves no file.
+  Outcome two = hlr({"check", mesh, "--raster", "128,256", "--diff", out("e.png").string()});
+  EXPECT_EQ(two.exit_code, 2);
+  const std::string bad = write_input("bad.off", "OFF\n3 1 0\n0 0 0\n").string();
+  Outcome broken = hlr({"check", bad, "--diff", out("f.png").string(), "--json", out("f.json").string()});
+  EXPECT_EQ(broken.exit_code, 1);
+  EXPECT_EQ(count_lines(broken.err), 1u) << broken.err;
+  EXPECT_EQ(broken.err.rfind("hlr: " + bad + ": ", 0), 0u) << broken.err;
+  EXPECT_EQ(entries(dir_ / "out"), std::vector<std::string>{"d.png"});
+  Outcome kernel = hlr({"check", mesh, "--kernel", "epick"});
+  EXPECT_EQ(kernel.exit_code, 2) << "check has --kernels, not --kernel";
 }
 
 }  // namespace

@@ -1,0 +1,164 @@
+#!/usr/bin/env python3
+"""The speed-versus-accuracy chart from the reports of bench/chart/run.sh.
+
+    chart.py CHECK_DIR --out OUT.csv --images PATH_WITHOUT_EXTENSION [--label TEXT]
+             [--lineart-lengths LENGTHS.csv --lineart-times DRAW.csv]
+
+CHECK_DIR holds NAME__VIEW__METHOD.json (hlr-check/1) and .rc (the exit code) for
+METHOD in raster, epick, double. Writes one CSV row per mesh, view and method (status ok, failed
+= the kernel threw, invalid, crashed = no report), the chart as PATH.svg and PATH.png, and prints
+one line per method: cases, failures, pooled accuracy, summed and median time.
+"""
+import argparse
+import csv
+import glob
+import json
+import os
+import statistics
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+RASTER_SIZES = [256, 512, 1024, 2048, 4096]
+
+
+def check_rows(check_dir):
+    rows = []
+    for rc_path in sorted(glob.glob(os.path.join(check_dir, "*.rc"))):
+        base = rc_path[:-3]
+        name, view, group = os.path.basename(base).split("__")
+        rc = open(rc_path).read().strip()
+        report = None
+        if rc == "0" and os.path.exists(base + ".json"):
+            with open(base + ".json") as f:
+                report = json.load(f)
+        expected = [f"raster {n}" for n in RASTER_SIZES] if group == "raster" else [group]
+        if report is None:  # crashed or timed out: every method of that process
+            for method in expected:
+                rows.append(dict(mesh=name, view=view, method=method, status="crashed", seconds="",
+                                 fraction=0.0, total_length="", message=f"exit {rc}"))
+            continue
+        ref_seconds = report["reference"]["seconds"]
+        if group == "raster":  # one exact row per case, from the raster process's reference
+            rows.append(dict(mesh=name, view=view, method="exact", status="ok", seconds=ref_seconds,
+                             fraction=1.0, total_length="", message=""))
+        for m in report["methods"]:
+            method = m["method"] + (f" {m['resolution']}" if "resolution" in m else "")
+            a = m.get("agreement", {})
+            rows.append(dict(mesh=name, view=view, method=method, status=m["status"],
+                             seconds=m["seconds"] if m["status"] != "failed" else "",
+                             fraction=a.get("fraction", 0.0), total_length=a.get("total_length", ""),
+                             message=m.get("message", "")))
+    return rows
+
+
+def lineart_rows(lengths_csv, draw_csv):
+    times = {}
+    with open(draw_csv) as f:
+        for r in csv.DictReader(f):
+            times[(r["mesh"], r["view"])] = r["lineart_s"]
+    rows = []
+    with open(lengths_csv) as f:
+        for r in csv.DictReader(f):
+            total = float(r["hlr_vis"]) + float(r["hlr_hid"])
+            missed = float(r["vis_hlr_only"]) + float(r["hid_hlr_only"])
+            t = times.get((r["mesh"], r["view"]), "failed")
+            ok = t not in ("failed", "", "n/a")
+            rows.append(dict(mesh=r["mesh"], view=r["view"], method="Line Art", status="ok" if ok else "crashed",
+                             seconds=float(t) if ok else "", fraction=(1 - missed / total) if total > 0 else 1.0,
+                             total_length=total, message="drawn length matched within 1e-4 of the extent"))
+    return rows
+
+
+def summarize(rows):
+    methods = []
+    for r in rows:
+        if r["method"] not in methods:
+            methods.append(r["method"])
+    order = ["exact", "epick", "double"] + [f"raster {n}" for n in RASTER_SIZES] + ["Line Art"]
+    methods.sort(key=lambda m: order.index(m) if m in order else len(order))
+    out = []
+    for m in methods:
+        rs = [r for r in rows if r["method"] == m]
+        ok = [r for r in rs if r["status"] == "ok"]
+        seconds = [float(r["seconds"]) for r in rs if r["seconds"] != ""]
+        out.append(dict(method=m, cases=len(rs), ok=len(ok),
+                        failed=sum(r["status"] == "failed" for r in rs),
+                        invalid=sum(r["status"] == "invalid" for r in rs),
+                        crashed=sum(r["status"] == "crashed" for r in rs),
+                        accuracy=statistics.fmean(float(r["fraction"]) for r in rs) if rs else 0.0,
+                        accuracy_ok=statistics.fmean(float(r["fraction"]) for r in ok) if ok else 0.0,
+                        worst=min((float(r["fraction"]) for r in ok), default=0.0),
+                        seconds=sum(seconds), median_seconds=statistics.median(seconds) if seconds else 0.0))
+    return out
+
+
+def plot(summary, images, label):
+    fig, ax = plt.subplots(figsize=(8, 5.2))
+    colors = {"exact": "#000000", "epick": "#d62728", "double": "#ff7f0e", "Line Art": "#2ca02c"}
+    raster = [s for s in summary if s["method"].startswith("raster")]
+    if raster:
+        ax.plot([s["seconds"] for s in raster], [100 * s["accuracy"] for s in raster], "-o", color="#1f77b4",
+                label="raster P-buffer, 256 to 4096 px")
+        for s in raster:
+            ax.annotate(s["method"].split()[1], (s["seconds"], 100 * s["accuracy"]), textcoords="offset points",
+                        xytext=(4, -12), fontsize=8, color="#1f77b4")
+    for s in summary:
+        if s["method"].startswith("raster"):
+            continue
+        bad = s["failed"] + s["invalid"] + s["crashed"]
+        text = s["method"] + (f" ({bad} of {s['cases']} runs failed)" if bad else "")
+        marker = "s" if s["method"] == "Line Art" else "D"
+        ax.plot([s["seconds"]], [100 * s["accuracy"]], marker, color=colors.get(s["method"], "#7f7f7f"),
+                markersize=8, label=text)
+    ax.set_xscale("log")
+    ax.set_xlabel("time, summed over all meshes and views (s, log scale)")
+    ax.set_ylabel("line length classified as exact does (%, mean of cases;\nfailed runs count 0)")
+    ax.set_title("hlr: speed against accuracy" + (f" ({label})" if label else ""), fontsize=11)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="lower right")
+    fig.text(0.01, 0.01, "Line Art: share of hlr's exact drawn length it draws in the same class (another measure).",
+             fontsize=7, color="#555555")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    os.makedirs(os.path.dirname(images), exist_ok=True)
+    fig.savefig(images + ".svg")
+    fig.savefig(images + ".png", dpi=110)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("check_dir")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--images", required=True)
+    ap.add_argument("--label", default="")
+    ap.add_argument("--lineart-lengths")
+    ap.add_argument("--lineart-times")
+    args = ap.parse_args()
+    rows = check_rows(args.check_dir)
+    if args.lineart_lengths and args.lineart_times:
+        rows += lineart_rows(args.lineart_lengths, args.lineart_times)
+    if not rows:
+        sys.exit("chart.py: no reports in " + args.check_dir)
+    os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
+    fields = ["mesh", "view", "method", "status", "seconds", "fraction", "total_length", "message"]
+    with open(args.out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows(rows)
+    summary = summarize(rows)
+    plot(summary, args.images, args.label)
+    print("| method | cases | ok | failed | invalid | crashed | accuracy (mean, failures 0) | accuracy of ok runs"
+          " | worst ok | time summed (s) | median (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for s in summary:
+        print(f"| {s['method']} | {s['cases']} | {s['ok']} | {s['failed']} | {s['invalid']} | {s['crashed']} | "
+              f"{100 * s['accuracy']:.3f}% | {100 * s['accuracy_ok']:.3f}% | {100 * s['worst']:.2f}% | "
+              f"{s['seconds']:.3g} | {s['median_seconds']:.3g} |")
+    print(f"wrote {args.out}, {args.images}.svg, {args.images}.png")
+
+
+if __name__ == "__main__":
+    main()

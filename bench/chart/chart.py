@@ -96,6 +96,20 @@ def summarize(rows):
     return out
 
 
+def print_cases(rows, meshes):
+    methods = ["epick", "double"] + [f"raster {n}" for n in RASTER_SIZES]
+    print("\n| mesh | view | " + " | ".join(methods) + " |")
+    print("|---|---|" + "---|" * len(methods))
+    for mesh in meshes:
+        for view in sorted({r["view"] for r in rows if r["mesh"] == mesh}):
+            cells = []
+            for m in methods:
+                r = next((r for r in rows if r["mesh"] == mesh and r["view"] == view and r["method"] == m), None)
+                cells.append("" if r is None else f"{100 * float(r['fraction']):.2f}%" if r["status"] == "ok"
+                             else r["status"])
+            print(f"| {mesh} | {view} | " + " | ".join(cells) + " |")
+
+
 def plot(summary, images, label):
     fig, ax = plt.subplots(figsize=(8, 5.2))
     colors = {"exact": "#000000", "epick": "#d62728", "double": "#ff7f0e", "Line Art": "#2ca02c"}
@@ -136,6 +150,8 @@ def main():
     ap.add_argument("--label", default="")
     ap.add_argument("--lineart-lengths")
     ap.add_argument("--lineart-times")
+    ap.add_argument("--cases", help="comma list of mesh names: also print their cases, one row per mesh and view "
+                                    "(docs/STABILITY.md quotes it)")
     args = ap.parse_args()
     rows = check_rows(args.check_dir)
     if args.lineart_lengths and args.lineart_times:
@@ -157,6 +173,8 @@ def main():
         print(f"| {s['method']} | {s['cases']} | {s['ok']} | {s['failed']} | {s['invalid']} | {s['crashed']} | "
               f"{100 * s['accuracy']:.3f}% | {100 * s['accuracy_ok']:.3f}% | {100 * s['worst']:.2f}% | "
               f"{s['seconds']:.3g} | {s['median_seconds']:.3g} |")
+    if args.cases:
+        print_cases(rows, args.cases.split(","))
     print(f"wrote {args.out}, {args.images}.svg, {args.images}.png")
 
 

@@ -8,6 +8,7 @@
 #include <png.h>
 
 #include <filesystem>
+#include <set>
 
 namespace hlr::exporter {
 namespace {
@@ -155,13 +156,17 @@ LineDrawing exact_drawing(const std::vector<Mesh>& meshes, const View& view) {
 // In a general view, where no face is seen edge-on and no edge lies behind another's image, the
 // raster path errs only near where the exact classification changes or a line ends: every
 // disagreeing piece is a few pixels long (more where a line crosses an outline at a grazing
-// angle). edge_on.off is left out: its plate lies flat against the cube, and which of two
-// coincident faces a Z-buffer keeps is a toss (docs/STABILITY.md).
+// angle). Left out are the catalogue's scenes where the raster path fails by design
+// (docs/STABILITY.md): coincident faces (edge_on: which one a Z-buffer keeps is a toss), depth
+// differences below its offset (near_coplanar, grazing_penetration) and features below a pixel
+// (thin_sliver, tiny_feature).
 TEST(RasterPath, ErrsOnlyByPixelsInAGeneralView) {
   View view{"custom", {1, 2, -3}, {0, 0, 1}};
   std::size_t scenes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(HLR_SCENE_FIXTURES_DIR)) {
-    if (entry.path().extension() != ".off" || entry.path().filename() == "edge_on.off") continue;
+    static const std::set<std::string> raster_fails{"edge_on.off", "near_coplanar.off", "grazing_penetration.off",
+                                                    "thin_sliver.off", "tiny_feature.off"};
+    if (entry.path().extension() != ".off" || raster_fails.count(entry.path().filename().string())) continue;
     ImportReport report;
     const std::vector<Mesh> meshes{load_mesh(entry.path().string(), report)};
     const LineDrawing reference = exact_drawing(meshes, view);

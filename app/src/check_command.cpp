@@ -22,8 +22,7 @@ struct CheckOptions {
   std::vector<int> rasters;
   std::vector<std::string> kernels;
   std::string diff, json;
-  double crease = 30;
-  bool no_intersections = false;
+  LineRunSettings lines;
 };
 
 std::string percent(double fraction) {
@@ -57,9 +56,7 @@ int run(CheckOptions options) {
   }
 
   const Scene scene = load_scene(options.scene.meshes);
-  LineRunSettings settings;
-  settings.crease = options.crease;
-  settings.intersections = !options.no_intersections;
+  LineRunSettings settings = options.lines;
   settings.progress = scene.input.faces >= 10000;
   const Intersections intersections = find_intersections(scene, settings);
   const exporter::LineDrawing reference =
@@ -169,11 +166,7 @@ Subcommand add_check_command(CLI::App& parent) {
                   "visible line, blue where it shows a hidden one, orange where it has none")
       ->type_name("OUT.png");
   cmd->add_option("--json", options->json, "the report as hlr-check/1 JSON (docs/FORMATS.md)")->type_name("OUT.json");
-  cmd->add_option("--crease", options->crease, "an edge is a crease when its faces meet at more than DEG degrees")
-      ->check(CLI::Range(0.0, 180.0))
-      ->capture_default_str()
-      ->type_name("DEG");
-  cmd->add_flag("--no-intersections", options->no_intersections, "leave out the lines where faces penetrate");
+  add_line_options(*cmd, options->lines);
   cmd->footer(
       "Example:\n"
       "  hlr check fixtures/parts/anchor.off --view iso --raster 2048 --diff out/anchor_check.png\n"

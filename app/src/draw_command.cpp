@@ -19,10 +19,9 @@ struct DrawOptions {
   SceneOptions scene;
   std::vector<std::string> outputs;
   std::string hidden = "dashed";
-  double crease = 30;
+  LineRunSettings lines;
   std::string sheet = "A4";
   std::string scale;
-  bool no_intersections = false;
   int raster = 0;  // pixels; 0: the exact path (or --kernel)
   std::string dash = "arc";
 };
@@ -72,9 +71,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
 
   const Scene scene = load_scene(options.scene.meshes);
   const double read = seconds_since(start);
-  LineRunSettings settings;
-  settings.crease = options.crease;
-  settings.intersections = !options.no_intersections;
+  LineRunSettings settings = options.lines;
   settings.progress = scene.input.faces >= 10000;
   const Intersections intersections = find_intersections(scene, settings);
   RasterRun raster;
@@ -151,25 +148,21 @@ Subcommand add_draw_command(CLI::App& parent) {
       "draw", "Draw a mesh as an engineering line drawing: visible lines solid, hidden lines dashed, exactly.");
   add_scene_options(*cmd, options->scene);
   cmd->add_option("-o,--output", options->outputs,
-                  "file to write, by extension: .svg (a sheet, in mm), .dxf (R2000, model units) or .json "
-                  "(hlr-lines/1); may be given several times")
+                  "file to write, by extension: .svg (a sheet, in mm), .dxf (R2000, model units), .json "
+                  "(hlr-lines/1) or .png (with --raster); may be given several times")
       ->required()
       ->type_name("OUT");
   cmd->add_option("--hidden", options->hidden, "hidden lines in SVG and DXF: dashed or none (JSON keeps them)")
       ->check(CLI::IsMember({"dashed", "none"}))
       ->capture_default_str()
       ->type_name("STYLE");
-  cmd->add_option("--crease", options->crease, "an edge is a crease when its faces meet at more than DEG degrees")
-      ->check(CLI::Range(0.0, 180.0))
-      ->capture_default_str()
-      ->type_name("DEG");
+  add_line_options(*cmd, options->lines);
   cmd->add_option("--sheet", options->sheet, "sheet for the SVG, landscape: A0, A1, A2, A3 or A4")
       ->capture_default_str()
       ->type_name("SIZE");
   cmd->add_option("--scale", options->scale,
                   "drawing scale such as 1:2 or 5:1 (default: the largest ISO 5455 scale that fits the sheet)")
       ->type_name("SCALE");
-  cmd->add_flag("--no-intersections", options->no_intersections, "do not draw lines where faces penetrate");
   cmd->add_option("--raster", options->raster,
                   "decide visibility in image space instead (the P-buffer path, inexact): a Z-buffer N pixels "
                   "along the longer side; needed for .png output")

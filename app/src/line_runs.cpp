@@ -48,6 +48,15 @@ exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kin
 
 }  // namespace
 
+void add_line_options(CLI::App& cmd, LineRunSettings& settings) {
+  cmd.add_option("--crease", settings.crease, "an edge is a crease when its faces meet at more than DEG degrees")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str()
+      ->type_name("DEG");
+  cmd.add_flag_callback(
+      "--no-intersections", [&settings] { settings.intersections = false; }, "leave out the lines where faces penetrate");
+}
+
 Intersections find_intersections(const Scene& scene, const LineRunSettings& settings) {
   Intersections out;
   if (!settings.intersections) return out;
@@ -61,12 +70,7 @@ Intersections find_intersections(const Scene& scene, const LineRunSettings& sett
 exporter::LineDrawing kernel_drawing(const SceneOptions& options, const Scene& scene, const View& view, KernelKind kind,
                                      const Intersections& intersections, const LineRunSettings& settings) {
   try {
-    switch (kind) {
-      case KernelKind::epick: return solve<EpickKernel>(scene, view, kind, intersections, settings);
-      case KernelKind::floating: return solve<DoubleKernel>(scene, view, kind, intersections, settings);
-      case KernelKind::exact: break;
-    }
-    return solve<ExactKernel>(scene, view, kind, intersections, settings);
+    return with_kernel(kind, [&]<class K>(KernelKind k) { return solve<K>(scene, view, k, intersections, settings); });
   } catch (const clip::ClipError& e) {
     throw inexact_kernel_failure(options, kind, e);
   }

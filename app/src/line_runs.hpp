@@ -18,6 +18,9 @@ struct LineRunSettings {
   bool progress = false;  // stage lines on stderr
 };
 
+// --crease DEG and --no-intersections, into `settings`.
+void add_line_options(CLI::App& cmd, LineRunSettings& settings);
+
 // The exact intersection segments of the scene, if the settings ask for them, and their time.
 struct Intersections {
   std::vector<hidden_line::IntersectionSegment> segments;

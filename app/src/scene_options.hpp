@@ -37,17 +37,23 @@ struct Scene {
 // Reads every mesh (throws ImportError) and prints the importer's warnings.
 Scene load_scene(const std::vector<std::string>& paths);
 
-// Calls solve.template operator()<K>(kind) with the kernel type the options name.
+// Calls solve.template operator()<K>(kind) with the kernel type of `kind`.
 template <class Solve>
-int with_kernel(const SceneOptions& options, Solve&& solve) {
-  KernelKind kind = KernelKind::exact;
-  parse_kernel_kind(options.kernel, kind);
+decltype(auto) with_kernel(KernelKind kind, Solve&& solve) {
   switch (kind) {
     case KernelKind::epick: return solve.template operator()<EpickKernel>(kind);
     case KernelKind::floating: return solve.template operator()<DoubleKernel>(kind);
     case KernelKind::exact: break;
   }
   return solve.template operator()<ExactKernel>(kind);
+}
+
+// The same, with the kernel the options name.
+template <class Solve>
+int with_kernel(const SceneOptions& options, Solve&& solve) {
+  KernelKind kind = KernelKind::exact;
+  parse_kernel_kind(options.kernel, kind);
+  return with_kernel(kind, std::forward<Solve>(solve));
 }
 
 // The error for a run whose inexact kernel contradicted itself (a ClipError: the exact kernel

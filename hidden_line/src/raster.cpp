@@ -275,10 +275,15 @@ RasterImage RasterDrawing::pbuffer(DashPattern pattern) const {
   constexpr std::uint8_t kLine = 0, kBackground = 255;
 
   if (pattern == DashPattern::arc_length) {
-    // Hidden dashes first, then visible lines over them (ISO 128 precedence).
+    // Hidden dashes first, then visible lines over them (ISO 128 precedence); each line is
+    // classified once.
+    std::vector<std::vector<char>> classes;
+    classes.reserve(d.lines.size());
+    for (const RasterLine& r : d.lines) classes.push_back(d.sample_classes(r));
     for (const bool visible_pass : {false, true})
-      for (const RasterLine& r : d.lines) {
-        const std::vector<char> visible = d.sample_classes(r);
+      for (std::size_t i = 0; i < d.lines.size(); ++i) {
+        const RasterLine& r = d.lines[i];
+        const std::vector<char>& visible = classes[i];
         for_each_pixel_step(g, r.a[0], r.a[1], r.b[0], r.b[1], [&](int column, int row, long k, long) {
           if (visible[std::size_t(k)] != visible_pass) return;
           if (visible_pass || arc_dash_passes(double(k) + 0.5)) paint(column, row, kLine);

@@ -70,9 +70,6 @@ int solve(const SurfacesOptions& options, const View& view, KernelKind kind) {
     file.commit();
   }
   const auto& st = sources.stats;
-  if (st.non_simple_faces_skipped > 0)
-    std::cerr << "hlr: warning: " << st.non_simple_faces_skipped
-              << " polygon faces skipped: their projection in this view is not a simple polygon\n";
   std::cout << "hlr surfaces: " << input.faces << " faces, view " << view.name << ", kernel " << kernel_name(kind) << '\n'
             << "  " << st.back_faces_removed << " back faces and " << st.edge_on_faces_removed
             << " edge-on faces removed; " << st.faces_consolidated << " faces consolidated; " << st.sources

@@ -83,9 +83,11 @@ std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
   for (const auto& s : doc.sources.polygons) {
     json js;
     js["mesh"] = s.mesh;
-    json faces = json::array();
     const Mesh& mesh = doc.meshes[s.mesh];
+    std::vector<std::uint32_t> faces;  // file faces; one may have given several (scene.hpp)
     for (std::uint32_t f : s.faces) faces.push_back(mesh.face_index.empty() ? f : mesh.face_index[f]);
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     js["faces"] = faces;
     const auto plane = detail::orthonormal_plane(s.plane, doc.frame);
     js["plane"] = {plane[0], plane[1], plane[2], plane[3]};
@@ -119,10 +121,10 @@ std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
       {"back_faces_removed", ss.back_faces_removed},
       {"edge_on_faces_removed", ss.edge_on_faces_removed},
       {"faces_consolidated", ss.faces_consolidated},
-      {"non_simple_faces_skipped", ss.non_simple_faces_skipped},
       {"sources", ss.sources},
       {"closed_components", ss.closed_components},
       {"open_components", ss.open_components},
+      {"inward_components", ss.inward_components},
       {"clips", as.clips},
       {"recursions", as.recursions},
       {"penetration_splits", as.penetration_splits},

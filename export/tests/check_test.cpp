@@ -158,14 +158,15 @@ LineDrawing exact_drawing(const std::vector<Mesh>& meshes, const View& view) {
 // disagreeing piece is a few pixels long (more where a line crosses an outline at a grazing
 // angle). Left out are the catalogue's scenes where the raster path fails by design
 // (docs/STABILITY.md): coincident faces (edge_on: which one a Z-buffer keeps is a toss), depth
-// differences below its offset (near_coplanar, grazing_penetration) and features below a pixel
-// (thin_sliver, tiny_feature).
+// differences below its offset (near_coplanar, grazing_penetration, and twisted_quads: its lines
+// pass just behind the next, almost coplanar fan triangles of the saddle) and features below a
+// pixel (thin_sliver, tiny_feature).
 TEST(RasterPath, ErrsOnlyByPixelsInAGeneralView) {
   View view{"custom", {1, 2, -3}, {0, 0, 1}};
   std::size_t scenes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(HLR_SCENE_FIXTURES_DIR)) {
     static const std::set<std::string> raster_fails{"edge_on.off", "near_coplanar.off", "grazing_penetration.off",
-                                                    "thin_sliver.off", "tiny_feature.off"};
+                                                    "thin_sliver.off", "tiny_feature.off", "twisted_quads.off"};
     if (entry.path().extension() != ".off" || raster_fails.count(entry.path().filename().string())) continue;
     ImportReport report;
     const std::vector<Mesh> meshes{load_mesh(entry.path().string(), report)};

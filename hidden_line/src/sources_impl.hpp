@@ -1,8 +1,10 @@
 // build_sources as a template over the kernel; included only by the instantiate_*.cpp files.
 //
-// Which faces are coplanar, and which components are closed and consistently oriented, are facts
-// of the model, decided once in model space with exact predicates (CGAL Epeck on the input
-// doubles), whatever the kernel; so the same faces are consolidated in every view. Facing and
+// Which faces are coplanar, which components are closed and consistently oriented, and which of
+// those are inward (wound clockwise seen from outside, as STL exporters with flipped normals write
+// them), are facts of the model, decided once in model space with exact arithmetic on the input
+// doubles, whatever the kernel; so the same faces are consolidated and culled in every view, and a
+// mesh with every face reversed gives the same sources. Facing and
 // everything after it is decided in view space on kernel K.
 #pragma once
 
@@ -17,27 +19,13 @@
 namespace hlr::hidden_line {
 namespace detail {
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the lowest face
-  }
-};
-
 // Model-space facts about one mesh's faces, independent of the view.
 struct MeshTopology {
   std::vector<EdgeUse> uses;                 // sorted by key
-  std::vector<bool> closed_component;        // per face
+  std::vector<std::int8_t> outward;         // per face, as ComponentSides::outward
   std::vector<std::array<std::uint32_t, 3>> plane_vertices;  // per face: three non-collinear corners
   std::vector<std::uint32_t> coplanar_group; // per face: lowest face of its coplanar, connected group
-  std::size_t closed_components = 0, open_components = 0;
+  std::size_t closed_components = 0, open_components = 0, inward_components = 0;
 };
 
 inline MeshTopology analyse_mesh(const Mesh& mesh) {
@@ -62,23 +50,11 @@ inline MeshTopology analyse_mesh(const Mesh& mesh) {
     }
   }
 
-  // Components, and whether each is closed and consistently oriented: every edge has exactly two
-  // faces that run it in opposite directions.
-  UnionFind components(nf);
-  for_each_edge(t.uses, [&](EdgeUses first, EdgeUses last) {
-    for (EdgeUses it = first + 1; it != last; ++it) components.join(first->face, it->face);
-  });
-  std::vector<bool> component_closed(nf, true);
-  for_each_edge(t.uses, [&](EdgeUses first, EdgeUses last) {
-    const bool manifold_pair = last - first == 2 && first[0].forward != first[1].forward;
-    if (!manifold_pair) component_closed[components.find(first->face)] = false;
-  });
-  t.closed_component.resize(nf);
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    const std::uint32_t root = components.find(f);
-    t.closed_component[f] = component_closed[root];
-    if (root == f) ++(component_closed[root] ? t.closed_components : t.open_components);
-  }
+  const ComponentSides sides = component_sides(mesh, t.uses);
+  t.outward = sides.outward;
+  t.closed_components = sides.closed;
+  t.open_components = sides.open;
+  t.inward_components = sides.inward;
 
   // Coplanar groups: faces joined across an edge they run in opposite directions, with every
   // corner of one in the plane of the other.
@@ -117,6 +93,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     const detail::MeshTopology topo = detail::analyse_mesh(mesh);
     out.stats.closed_components += topo.closed_components;
     out.stats.open_components += topo.open_components;
+    out.stats.inward_components += topo.inward_components;
 
     std::vector<ViewPoint<K>> vp(mesh.vertices.size());
     std::vector<P> p2(mesh.vertices.size());
@@ -166,7 +143,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       if (facing[f] == 0) {
         ++out.stats.edge_on_faces_removed;
         out.edge_on_faces.push_back({mi, f});
-      } else if (facing[f] < 0 && options.remove_back_faces && topo.closed_component[f]) {
+      } else if (facing[f] * topo.outward[f] < 0 && options.remove_back_faces) {
         ++out.stats.back_faces_removed;
       } else {
         keep[f] = true;
@@ -229,10 +206,12 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       }
       for (std::uint32_t f : faces) {
         clip::Polygon<K> polygon{face_contour(f), {}};
-        if (mesh.faces[f].size() > 3 && clip::normalize_polygon(polygon)) {
-          ++out.stats.non_simple_faces_skipped;
-          continue;
-        }
+        // Import makes every polygon face planar and simple, so its projection is simple unless a
+        // kernel rounds it: then the kernel fails here rather than draw without the face.
+        if (mesh.faces[f].size() > 3)
+          if (auto defect = clip::normalize_polygon(polygon))
+            throw clip::ClipError("face " + std::to_string(mesh.face_index[f]) + " of " + mesh.file +
+                                  " projects to a non-simple polygon (" + *defect + ")");
         add_source(std::move(polygon), {f});
       }
     }

@@ -29,6 +29,17 @@ View view_named(const std::string& name) {
 
 const std::vector<Mesh>& fixture(const std::string& file) { return scene_meshes(fixture_dir() + "/" + file); }
 
+// The file's faces from `first` on as a second mesh: two parts of an assembly. Import welds equal
+// coordinates within a file, so fixtures whose components share corners are one mesh as read.
+std::vector<Mesh> as_two_parts(const std::vector<Mesh>& meshes, std::uint32_t first) {
+  Mesh a = meshes.front(), b = meshes.front();
+  a.faces.resize(first);
+  a.face_index.resize(first);
+  b.faces.erase(b.faces.begin(), b.faces.begin() + first);
+  b.face_index.erase(b.face_index.begin(), b.face_index.begin() + first);
+  return {a, b};
+}
+
 // Solves on the exact kernel and checks every invariant; returns the map for further expectations.
 XMap solve_and_check(const std::vector<Mesh>& meshes, const View& view, bool remove_back_faces, bool region_checks,
                      const std::string& label) {
@@ -79,8 +90,11 @@ TEST(SurfaceOracle, DepthAndCoverageOfTheCube) {
 
 TEST(SurfaceOracle, FixturesAreClosedAndOutwardWhereMeantToBe) {
   // Closed components of the fixtures have a positive signed volume (faces counter-clockwise seen
-  // from outside); measured here with the divergence theorem on the exact coordinates.
+  // from outside); measured here with the divergence theorem on the exact coordinates. The fixtures
+  // of inward meshes (real_mesh_fixtures.py) have an inward component on purpose.
+  const std::set<std::string> inward{"inward_box.off", "inward_prism.off", "mixed_orientation.off"};
   for (const std::string& file : fixture_files()) {
+    if (inward.count(file)) continue;
     const auto& mesh = fixture(file).front();
     const SceneOracle oracle(fixture(file), view_named("top"));
     // Signed volume per closed face set: sum over faces of the fan tetrahedra.
@@ -106,7 +120,7 @@ TEST(SurfaceOracle, FixturesAreClosedAndOutwardWhereMeantToBe) {
 
 // The checks catch what they are for: errors planted in a correct map are reported.
 TEST(SurfaceChecks, CatchPlantedErrors) {
-  const auto& meshes = fixture("stacked_boxes.off");
+  const auto meshes = as_two_parts(fixture("stacked_boxes.off"), 6);
   const View top = view_named("top");
   const SceneOracle oracle(meshes, top);
   const XMap good = solve<ExactKernel>(meshes, top, {}).map;
@@ -248,15 +262,16 @@ TEST(FixtureExpectations, CubeInEveryAxisViewIsOneFaceAndInIsoThree) {
 
 TEST(FixtureExpectations, StackedBoxesAreNotConsolidatedAcrossComponents) {
   // Both boxes' front faces lie in y = 0 and touch along z = 1, but the boxes are separate
-  // components: consolidation only merges coplanar faces joined by a mesh edge.
-  const XMap front = solve_and_check(fixture("stacked_boxes.off"), view_named("front"), true, true, "stacked");
-  EXPECT_EQ(source_faces(front), (Lists{{2}, {8}}));
+  // parts: consolidation only merges coplanar faces joined by a mesh edge.
+  const auto parts = as_two_parts(fixture("stacked_boxes.off"), 6);
+  const XMap front = solve_and_check(parts, view_named("front"), true, true, "stacked");
+  EXPECT_EQ(source_faces(front), (Lists{{2}, {2}}));
   EXPECT_EQ(front.visible.size(), 2u);
   EXPECT_TRUE(front.hidden.empty());
   EXPECT_EQ(visible_area(front), FT(10));  // 3 x 1 + 2 x 1, doubled
   // Top view: the upper box's top (face 7) hides a 2 x 2 part of the lower box's top (face 1).
-  const XMap top = solve_and_check(fixture("stacked_boxes.off"), view_named("top"), true, true, "stacked");
-  EXPECT_EQ(source_faces(top), (Lists{{1}, {7}}));
+  const XMap top = solve_and_check(parts, view_named("top"), true, true, "stacked");
+  EXPECT_EQ(source_faces(top), (Lists{{1}, {1}}));
   EXPECT_EQ(visible_area(top), FT(12));
   EXPECT_EQ(hidden_area(top), FT(8));
   for (const auto& h : top.hidden) {
@@ -359,20 +374,23 @@ TEST(FixtureExpectations, CoincidentFacesTieToTheLowerSource) {
 }
 
 TEST(FixtureExpectations, RingAndFillMeetExactly) {
-  // Separate components: the ring (a polygon with a hole) and its fill touch along the whole hole.
-  const XMap apart = solve_and_check(fixture("ring_with_fill.off"), view_named("top"), true, true, "ring");
+  // Separate parts: the ring (a polygon with a hole) and its fill touch along the whole hole.
+  const XMap apart = solve_and_check(as_two_parts(fixture("ring_with_fill.off"), 8), view_named("top"), true, true, "ring");
   ASSERT_EQ(apart.sources.size(), 2u);
   EXPECT_EQ(apart.sources[0].polygon.holes.size(), 1u);
   EXPECT_EQ(apart.visible.size(), 2u);
   EXPECT_TRUE(apart.hidden.empty());
   EXPECT_EQ(apart.sort_stats.coplanar_ties, 0u);
   EXPECT_EQ(visible_area(apart), FT(18));
-  // Sharing the hole's vertices: one coplanar, connected group, one square without a hole.
-  const XMap shared = solve_and_check(fixture("ring_with_fill_shared.off"), view_named("top"), true, true, "ring");
-  ASSERT_EQ(shared.sources.size(), 1u);
-  EXPECT_TRUE(shared.sources[0].polygon.holes.empty());
-  EXPECT_EQ(shared.sources[0].polygon.outer.size(), 4u);
-  EXPECT_EQ(visible_area(shared), FT(18));
+  // Sharing the hole's vertices: one coplanar, connected group, one square without a hole; so is
+  // the one-file version, whose equal corners import welds.
+  for (const char* file : {"ring_with_fill_shared.off", "ring_with_fill.off"}) {
+    const XMap shared = solve_and_check(fixture(file), view_named("top"), true, true, "ring");
+    ASSERT_EQ(shared.sources.size(), 1u);
+    EXPECT_TRUE(shared.sources[0].polygon.holes.empty());
+    EXPECT_EQ(shared.sources[0].polygon.outer.size(), 4u);
+    EXPECT_EQ(visible_area(shared), FT(18));
+  }
 }
 
 TEST(FixtureExpectations, AreaSortDepthSoupResolves) {

@@ -132,13 +132,19 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
       newell(model_corners(mesh, face), nx, ny, nz);
       normal.emplace_back(nx, ny, nz);
     }
-    // (low, high) -> uses (face, runs low -> high), faces in ascending order.
+    // (low, high) -> uses (face, runs low -> high), faces in ascending order; edges all of whose
+    // uses are internal to one non-planar face's fan (DESIGN.md: the crease rule only).
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, bool>>> edges;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, bool> fan;
+    const std::vector<int> sides = closed_sides(mesh);
     for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
       const auto& face = mesh.faces[f];
       for (std::size_t i = 0; i < face.size(); ++i) {
         const std::uint32_t p = face[i], q = face[(i + 1) % face.size()];
         edges[{std::min(p, q), std::max(p, q)}].push_back({f, p < q});
+        const bool internal = !mesh.fan_edges.empty() && (mesh.fan_edges[f] >> i & 1u);
+        auto [it, first] = fan.try_emplace({std::min(p, q), std::max(p, q)}, internal);
+        if (!first) it->second = it->second && internal;
       }
     }
     for (const auto& [key, uses] : edges) {
@@ -157,9 +163,13 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
         // Alike: faces sharing an edge agree in orientation when they run it in opposite directions.
         const EK::Vector_3 nf = normal[f];
         const EK::Vector_3 ng = f_up == g_up ? -normal[g] : normal[g];
-        const bool f_faces = CGAL::sign(nf * toward) == CGAL::POSITIVE;
-        const bool g_faces = CGAL::sign(ng * toward) == CGAL::POSITIVE;
-        if (f_faces != g_faces) {
+        // The front side is the outside for a closed solid; elsewhere the two sides are alike, so a
+        // silhouette is where the (alike-oriented) faces' facings differ at all.
+        const int side = sides[f];
+        const int f_sign = CGAL::sign(nf * toward), g_sign = CGAL::sign(ng * toward);
+        const bool turns = side != 0 ? (f_sign * side > 0) != (g_sign * side > 0) : f_sign != g_sign;
+        const bool crease_only = fan.at(key);
+        if (turns && !crease_only) {
           e.kind = FeatureKind::silhouette;
         } else if (dihedral_above(nf, ng, cos_threshold)) {
           e.kind = FeatureKind::crease;

@@ -7,8 +7,10 @@
 #include <hlr/hidden_line/lines.hpp>
 #include <hlr/hidden_line/visibility.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,55 @@ inline LineRun run_lines(const std::vector<Mesh>& meshes, const View& view, cons
   t = clock::now();
   out.set = hidden_line::classify_lines<ExactKernel>(meshes, frame, sources, map, intersections, options);
   out.classify_seconds = since(t);
+  return out;
+}
+
+// The meshes with every face reversed, first corner kept (a fan from it stays the same fan).
+inline std::vector<Mesh> reversed_meshes(std::vector<Mesh> meshes) {
+  for (Mesh& m : meshes)
+    for (std::size_t f = 0; f < m.faces.size(); ++f) {
+      auto& face = m.faces[f];
+      const std::size_t n = face.size();
+      std::reverse(face.begin() + 1, face.end());
+      if (m.fan_edges.empty()) continue;
+      std::uint8_t bits = 0;  // edge j of the reversed face is edge n - 1 - j of the original
+      for (std::size_t j = 0; j < n; ++j) bits |= ((m.fan_edges[f] >> (n - 1 - j)) & 1u) << j;
+      m.fan_edges[f] = bits;
+    }
+  return meshes;
+}
+
+// A LineSet as sorted text, exact: per line its kind, mesh, mesh edge (when `edges`), end points in
+// a canonical order and its pieces along that order. Equal texts mean equal drawings.
+inline std::vector<std::string> line_signature(const hidden_line::LineSet<ExactKernel>& set, bool edges = true) {
+  std::vector<std::string> out;
+  for (const auto& l : set.lines) {
+    auto text = [](const ViewPoint<ExactKernel>& p) {
+      std::ostringstream s;
+      s << CGAL::exact(p.x) << ' ' << CGAL::exact(p.y) << ' ' << CGAL::exact(p.z);
+      return s.str();
+    };
+    std::string a = text(l.a), b = text(l.b);
+    const bool flip = b < a;
+    std::ostringstream s;
+    s << feature_kind_name(l.kind) << " mesh " << l.mesh;
+    if (edges && l.kind != FeatureKind::intersection) s << " edge " << l.v0 << '-' << l.v1;
+    s << " [" << (flip ? b : a) << "] [" << (flip ? a : b) << "]";
+    std::vector<std::string> pieces;
+    for (const auto& p : l.pieces) {
+      std::ostringstream q;
+      if (flip)
+        q << CGAL::exact(1 - p.t1) << ' ' << CGAL::exact(1 - p.t0);
+      else
+        q << CGAL::exact(p.t0) << ' ' << CGAL::exact(p.t1);
+      q << (p.visible ? " v" : " h");
+      pieces.push_back(q.str());
+    }
+    if (flip) std::reverse(pieces.begin(), pieces.end());
+    for (const auto& p : pieces) s << " (" << p << ')';
+    out.push_back(s.str());
+  }
+  std::sort(out.begin(), out.end());
   return out;
 }
 

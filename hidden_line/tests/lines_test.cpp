@@ -242,10 +242,8 @@ TEST(LinesHand, ReflexCornerFirstPrism) {
 
 TEST(LinesHand, InconsistentOrientationNextToAnEdgeOnFace) {
   // Two triangles on the edge 0-1, both running it 0 -> 1 (inconsistent orientation). In the front
-  // view one faces the viewer, the other lies in z = 0, edge-on. Oriented alike by flipping one of
-  // them, the edge-on face stays edge-on, and the other one faces the viewer or not depending on
-  // which is flipped: features.hpp does not say. Engine and oracle keep the lower-numbered face's
-  // orientation: a silhouette when that face is the one toward the viewer, else a crease.
+  // view one faces the viewer, the other lies in z = 0, edge-on. Not a closed solid, so its two
+  // sides are alike: one face is seen, the other edge-on, whichever is flipped: a silhouette.
   const std::vector<std::array<double, 3>> v{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0.5, 1, 0}};
   const View front = view_named("front");
   for (bool facing_first : {true, false}) {
@@ -255,7 +253,7 @@ TEST(LinesHand, InconsistentOrientationNextToAnEdgeOnFace) {
     const LineSetX set = run_and_check(meshes, front, facing_first ? "facing face first" : "edge-on face first");
     const auto* l = find_line(set, 0, 0, 1);
     ASSERT_TRUE(l);
-    EXPECT_EQ(l->kind, facing_first ? FeatureKind::silhouette : FeatureKind::crease);
+    EXPECT_EQ(l->kind, FeatureKind::silhouette);
   }
 }
 
@@ -602,8 +600,11 @@ TEST_P(LineFixtureViews, Contract) {
   const auto& p = GetParam();
   const auto& meshes = fixture(p.file);
   const PenetrationSearch pen = find_penetrations(meshes);
-  run_and_check(meshes, p.view, p.file, {}, true, &pen);
+  const LineSetX set = run_and_check(meshes, p.view, p.file, {}, true, &pen);
   run_and_check(meshes, p.view, p.file, {}, false, &pen);
+  // Winding is no input: the same mesh with every face reversed draws the same lines.
+  EXPECT_EQ(line_signature(run_lines(reversed_meshes(meshes), p.view).set), line_signature(set))
+      << p.file << " reversed";
 }
 
 std::vector<FixtureView> fixture_views() {
@@ -619,6 +620,69 @@ std::vector<FixtureView> fixture_views() {
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, LineFixtureViews, ::testing::ValuesIn(fixture_views()),
                          [](const auto& info) { return test_name(info.param.file) + "_" + info.param.label; });
+
+// Meshes as real exporters write them (fixtures/scenes/real_mesh_fixtures.py); the fixture runs
+// above check them against the oracle in every view, these check what they are for.
+
+TEST(LinesHand, InwardMeshesAreCulledAsTurnedOutward) {
+  // Inward-wound box in iso: three of its twelve edges are hidden, as for the outward box.
+  const auto& meshes = fixture("inward_box.off");
+  const LineSetX set = run_and_check(meshes, view_named("iso"), "inward_box");
+  std::size_t hidden_lines = 0;
+  for (const auto& l : set.lines)
+    hidden_lines += std::all_of(l.pieces.begin(), l.pieces.end(), [](const auto& p) { return !p.visible; });
+  EXPECT_EQ(set.lines.size(), 12u);
+  EXPECT_EQ(hidden_lines, 3u);
+  const ViewFrame<ExactKernel> frame(view_named("iso"));
+  const auto sources = hidden_line::build_sources<ExactKernel>(meshes, frame);
+  EXPECT_EQ(sources.stats.inward_components, 1u);
+  EXPECT_EQ(sources.stats.back_faces_removed, 3u);
+  // One inward and one outward component: each culled the right way.
+  const auto mixed = hidden_line::build_sources<ExactKernel>(fixture("mixed_orientation.off"), frame);
+  EXPECT_EQ(mixed.stats.inward_components, 1u);
+  EXPECT_EQ(mixed.stats.back_faces_removed, 6u);
+  // A box with one face flipped is not consistently oriented: none of its faces is culled.
+  const auto inconsistent = hidden_line::build_sources<ExactKernel>(fixture("mixed_consistency.off"), frame);
+  EXPECT_EQ(inconsistent.stats.back_faces_removed, 3u);
+}
+
+TEST(LinesHand, TriangleSoupsDrawAsTheWeldedMesh) {
+  // soup_box in three formats against the same box as 6 quads on 8 shared vertices.
+  const Mesh box = make_mesh("box", {{0, 0, 0}, {3, 0, 0}, {3, 2, 0}, {0, 2, 0}, {0, 0, 1}, {3, 0, 1}, {3, 2, 1}, {0, 2, 1}},
+                             {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}});
+  for (const char* name : {"iso", "front", "top"}) {
+    const View view = view_named(name);
+    const auto want = line_signature(run_and_check({box}, view, "box"), false);
+    for (const std::string file : {fixture_dir() + "/soup_box.off", fixture_dir() + "/../meshes/soup_box.obj",
+                                   fixture_dir() + "/../meshes/soup_box.ply"}) {
+      const auto& meshes = scene_meshes(file);
+      EXPECT_EQ(line_signature(run_and_check(meshes, view, file), false), want) << file << " " << name;
+    }
+  }
+}
+
+TEST(LinesHand, NonPlanarQuadsAreFans) {
+  // The saddle z = x y on a 5 x 5 grid: each quad is the fan from its first corner, whose diagonal
+  // runs from vertex k to k + 6. Where the two triangles face opposite ways the diagonal would be a
+  // silhouette; as a fan edge it is a line only by the crease rule.
+  const Mesh& mesh = fixture("twisted_quads.off").front();
+  ASSERT_EQ(mesh.faces.size(), 32u);
+  auto facing = [&](const std::vector<std::uint32_t>& f, const Vec3& d) {
+    const auto &a = mesh.vertices[f[0]], &b = mesh.vertices[f[1]], &c = mesh.vertices[f[2]];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    return (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) < 0;  // small integers: exact
+  };
+  std::size_t folded = 0;
+  for (const auto& view : named_views()) {
+    for (std::size_t q = 0; q < 16; ++q)
+      folded += facing(mesh.faces[2 * q], view.direction) != facing(mesh.faces[2 * q + 1], view.direction);
+    const LineSetX set = run_and_check(fixture("twisted_quads.off"), view, "twisted_quads");
+    for (const auto& l : set.lines)
+      if (l.v1 - l.v0 == 6) EXPECT_EQ(l.kind, FeatureKind::crease) << l.v0 << "-" << l.v1 << " in " << view.name;
+  }
+  EXPECT_GT(folded, 0u) << "no view folds a quad: the test tests nothing";
+}
 
 TEST(LinesHand, PenetratingBoxesHaveIntersectionLines) {
   for (const char* name : {"iso", "front", "top"}) {
@@ -662,6 +726,8 @@ TEST_P(LineSceneViews, Contract) {
   const LineReport report = check_lines(oracle, run.set, {}, &pen);
   auto t3 = clock::now();
   EXPECT_TRUE(report.ok()) << p.file << " view " << p.view.name << ": " << report.summary();
+  EXPECT_EQ(line_signature(run_lines(reversed_meshes(meshes), p.view).set), line_signature(run.set))
+      << p.file << " view " << p.view.name << " with every face reversed";
   auto secs = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
   std::printf("[ timing   ] %s %s: %zu lines (%zu intersection), %zu visible / %zu hidden pieces; engine %.2f s "
               "(sources %.2f, sort %.2f, intersections %.2f, classify %.2f), oracle %.2f s (+ penetrations %.2f s, "

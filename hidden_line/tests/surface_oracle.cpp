@@ -80,10 +80,12 @@ std::optional<P2> interior_point(const std::vector<P2>& outer, const std::vector
 
 namespace {
 
+}  // namespace
+
 // Closed, consistently oriented components of one mesh: faces connected through shared edges;
 // closed when every edge of the component is used by exactly two of its faces, in opposite
-// directions.
-std::vector<bool> closed_faces(const Mesh& mesh) {
+// directions. Their side is the sign of the volume they enclose (divergence theorem, exact).
+std::vector<int> closed_sides(const Mesh& mesh) {
   const std::size_t nf = mesh.faces.size();
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, bool>>> uses;
   for (std::uint32_t f = 0; f < nf; ++f) {
@@ -122,10 +124,28 @@ std::vector<bool> closed_faces(const Mesh& mesh) {
     const bool good = list.size() == 2 && list[0].second != list[1].second;
     if (!good) component_closed[component[list[0].first]] = false;
   }
-  std::vector<bool> closed(nf);
-  for (std::uint32_t f = 0; f < nf; ++f) closed[f] = component_closed[component[f]];
-  return closed;
+  std::vector<int> side(members.size(), 0);
+  for (std::size_t c = 0; c < members.size(); ++c) {
+    if (!component_closed[c]) continue;
+    FT volume = 0;
+    for (std::uint32_t f : members[c]) {
+      const auto& idx = mesh.faces[f];
+      auto p = [&](std::size_t k) { return mesh.vertices[idx[k]]; };
+      for (std::size_t k = 1; k + 1 < idx.size(); ++k) {
+        const auto a = p(0), b = p(k), q = p(k + 1);
+        volume += FT(a[0]) * (FT(b[1]) * FT(q[2]) - FT(b[2]) * FT(q[1])) -
+                  FT(a[1]) * (FT(b[0]) * FT(q[2]) - FT(b[2]) * FT(q[0])) +
+                  FT(a[2]) * (FT(b[0]) * FT(q[1]) - FT(b[1]) * FT(q[0]));
+      }
+    }
+    side[c] = static_cast<int>(CGAL::sign(volume));
+  }
+  std::vector<int> out(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) out[f] = side[component[f]];
+  return out;
 }
+
+namespace {
 
 CGAL::Bbox_2 interval_box(const P2& p) {
   auto x = CGAL::to_interval(p.x());
@@ -143,12 +163,13 @@ SceneOracle::SceneOracle(const std::vector<Mesh>& meshes, const View& view) {
     std::vector<ViewPoint<EK>> vp;
     vp.reserve(mesh.vertices.size());
     for (const auto& v : mesh.vertices) vp.push_back(frame.to_view(v));
-    const std::vector<bool> closed = closed_faces(mesh);
+    const std::vector<int> sides = closed_sides(mesh);
     std::vector<Face> faces(mesh.faces.size());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
       const auto& idx = mesh.faces[f];
       Face& out = faces[f];
-      out.closed = closed[f];
+      out.side = sides[f];
+      out.closed = sides[f] != 0;
       FT nx = 0, ny = 0, nz = 0;
       for (std::size_t i = 0; i < idx.size(); ++i) {
         const ViewPoint<EK>& p = vp[idx[i]];
@@ -205,7 +226,7 @@ void SceneOracle::cell_range(const CGAL::Bbox_2& b, int& x0, int& x1, int& y0, i
 bool SceneOracle::kept(FaceRef f, bool remove_back_faces) const {
   const Face& face = this->face(f);
   if (face.facing == 0) return false;
-  if (remove_back_faces && face.facing < 0 && face.closed) return false;
+  if (remove_back_faces && face.facing * face.side < 0) return false;
   return true;
 }
 

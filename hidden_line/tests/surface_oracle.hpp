@@ -2,7 +2,8 @@
 // takes the meshes as read and the exact view frame (kernel/view.hpp), and answers, by brute force
 // over every face of every mesh, in exact arithmetic (CGAL Epeck):
 //   - which faces are seen edge-on, front or back, and which lie in closed, consistently oriented
-//     components (so which faces the hidden-surface solution must keep);
+//     components and which way those face (so which faces the hidden-surface solution must keep:
+//     an inward component's back faces are the ones wound toward the viewer);
 //   - which faces contain a point of the view plane (faces are closed sets), and the largest exact
 //     depth z among them (a larger z is nearer to the viewer);
 //   - an exact interior point of a polygon with holes.
@@ -45,6 +46,10 @@ struct FaceRef {
 // boundary, -1 outside. The contour may be any closed polyline; inside means non-zero winding.
 int locate(const std::vector<P2>& contour, const P2& q);
 
+// Per face: +1 or -1 in a closed, consistently oriented component whose faces face outward or
+// inward (the sign of the volume they enclose), 0 elsewhere.
+std::vector<int> closed_sides(const Mesh& mesh);
+
 // An exact point strictly inside a polygon with holes (outer and holes in any orientation): a line
 // y = y* strictly between two consecutive distinct vertex ordinates (the widest gap) meets the
 // edges; the midpoint of the first interval between sorted crossings. Nothing when the polygon has
@@ -63,7 +68,8 @@ class SceneOracle {
     Plane plane;             // only when facing != 0
     int facing = 0;          // sign of the projected area: +1 toward the viewer, -1 away, 0 edge-on
     FT twice_projected_area;  // signed
-    bool closed = false;      // in a closed, consistently oriented component
+    bool closed = false;      // in a closed, consistently oriented component that encloses volume
+    int side = 0;             // closed: +1 outward, -1 inward (its back faces are the front-wound ones)
     CGAL::Bbox_2 box;         // conservative (interval) bounds of the projection
   };
   const Face& face(FaceRef f) const { return meshes_[f.mesh][f.face]; }

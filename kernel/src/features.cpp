@@ -60,8 +60,10 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
     facing[f] = CGAL::sign(normal[f] * toward_viewer);
   }
 
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  const ComponentSides sides = component_sides(mesh, uses);
   std::vector<FeatureEdge> out;
-  for_each_edge(edge_uses(mesh), [&](EdgeUses first, EdgeUses last) {
+  for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
     FeatureEdge edge;
     edge.v0 = edge_low(first->key);
     edge.v1 = edge_high(first->key);
@@ -75,8 +77,13 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
       // Orient the two faces alike: faces that run the edge the same way disagree in orientation.
       const std::uint32_t f = first[0].face, g = first[1].face;
       const int flip = first[0].forward == first[1].forward ? -1 : 1;
-      const bool f_front = facing[f] > 0, g_front = flip * facing[g] > 0;
-      if (f_front != g_front) {
+      // A closed solid's front side is its outside, whichever way it is wound; an open or
+      // inconsistent mesh has two alike sides, so the edge turns wherever the facings differ.
+      const int side = sides.outward[f];
+      const int f_sign = facing[f], g_sign = flip * facing[g];
+      const bool turns = side != 0 ? (f_sign * side > 0) != (g_sign * side > 0) : f_sign != g_sign;
+      const bool fan = first[0].fan && first[1].fan;  // inside one non-planar face: crease rule only
+      if (turns && !fan) {
         edge.kind = FeatureKind::silhouette;
       } else if (angle_above(normal[f], flip > 0 ? normal[g] : -normal[g], cos_threshold)) {
         edge.kind = FeatureKind::crease;

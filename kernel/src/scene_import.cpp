@@ -1,10 +1,12 @@
-// load_mesh: reads the file, hands it to the format's reader (scene_readers.hpp), then skips the
-// degenerate faces and counts the non-manifold ones (definitions in hlr/kernel/scene.hpp).
+// load_mesh: reads the file, hands it to the format's reader (scene_readers.hpp), welds vertices
+// and prepares the faces (scene_faces.hpp), then counts the non-manifold faces (definitions in
+// hlr/kernel/scene.hpp).
+#include <hlr/kernel/mesh_edges.hpp>
 #include <hlr/kernel/scene.hpp>
 
+#include "scene_faces.hpp"
 #include "scene_readers.hpp"
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
 #include <cctype>
@@ -158,64 +160,26 @@ std::string read_file(const std::string& path) {
   return bytes;
 }
 
-// Repeated vertex index anywhere in the face.
-bool has_repeated_index(const std::vector<std::uint32_t>& f) {
-  if (f.size() <= 16) {
-    for (std::size_t i = 0; i < f.size(); ++i)
-      for (std::size_t j = i + 1; j < f.size(); ++j)
-        if (f[i] == f[j]) return true;
-    return false;
-  }
-  std::vector<std::uint32_t> sorted(f);
-  std::sort(sorted.begin(), sorted.end());
-  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
-}
-
-// All vertices on one line (coincident points included), decided exactly. The coordinates are
-// doubles, so CGAL's filtered predicate on Epeck points decides exactly without constructing
-// anything.
-using Point3 = CGAL::Exact_predicates_exact_constructions_kernel::Point_3;
-bool all_collinear(const std::vector<std::uint32_t>& f, const std::vector<Point3>& p) {
-  const Point3& a = p[f[0]];
-  std::size_t j = 1;
-  while (j < f.size() && p[f[j]] == a) ++j;
-  if (j == f.size()) return true;  // all coincide
-  const Point3& b = p[f[j]];
-  for (std::size_t k = j + 1; k < f.size(); ++k)
-    if (!CGAL::collinear(a, b, p[f[k]])) return false;
-  return true;
-}
+using scene_detail::ExactPoint3;
 
 // Faces with an edge of more than two faces, or of two faces running the same way along it.
-std::size_t count_nonmanifold(const std::vector<std::vector<std::uint32_t>>& faces) {
-  struct Use {
-    std::uint32_t lo, hi, face;
-    bool forward;  // the face runs lo -> hi
-  };
-  std::vector<Use> uses;
-  std::size_t total = 0;
-  for (const auto& f : faces) total += f.size();
-  uses.reserve(total);
-  for (std::size_t k = 0; k < faces.size(); ++k) {
-    const auto& f = faces[k];
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      std::uint32_t u = f[i], v = f[(i + 1) % f.size()];
-      uses.push_back({std::min(u, v), std::max(u, v), static_cast<std::uint32_t>(k), u < v});
-    }
-  }
-  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
-    return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi;
+std::size_t count_nonmanifold(const Mesh& mesh, const std::vector<EdgeUse>& uses) {
+  std::vector<char> bad(mesh.faces.size(), 0);
+  for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
+    if (last - first > 2 || (last - first == 2 && first[0].forward == first[1].forward))
+      for (EdgeUses u = first; u != last; ++u) bad[u->face] = 1;
   });
-  std::vector<char> bad(faces.size(), 0);
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
-    bool clash = j - i > 2 || (j - i == 2 && uses[i].forward == uses[i + 1].forward);
-    if (clash)
-      for (std::size_t k = i; k < j; ++k) bad[uses[k].face] = 1;
-    i = j;
-  }
   return static_cast<std::size_t>(std::count(bad.begin(), bad.end(), 1));
+}
+
+// Faces none of whose edges belongs to another face.
+std::size_t count_isolated(const Mesh& mesh, const std::vector<EdgeUse>& uses) {
+  std::vector<char> shares(mesh.faces.size(), 0);
+  for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
+    if (first->face != (last - 1)->face)  // uses are sorted by face
+      for (EdgeUses u = first; u != last; ++u) shares[u->face] = 1;
+  });
+  return static_cast<std::size_t>(std::count(shares.begin(), shares.end(), 0));
 }
 
 Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
@@ -238,30 +202,41 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
 
   Mesh mesh;
   mesh.file = path;
-  std::vector<Point3> points;
+  const std::vector<std::uint32_t> canonical = scene_detail::weld_vertices(raw.vertices);
+  std::size_t welded = 0;
+  for (std::uint32_t v = 0; v < canonical.size(); ++v) welded += canonical[v] != v;
+  std::vector<ExactPoint3> points;
   points.reserve(raw.vertices.size());
   for (const auto& v : raw.vertices) points.emplace_back(v[0], v[1], v[2]);
 
   const bool groups = !raw.face_group.empty();
   std::size_t degenerate = 0;
-  mesh.faces.reserve(raw.faces.size());
+  scene_detail::PreparedFaces prepared;
+  prepared.faces.reserve(raw.faces.size());
   mesh.face_index.reserve(raw.faces.size());
   for (std::size_t k = 0; k < raw.faces.size(); ++k) {
     auto& f = raw.faces[k];
-    if (f.size() < 3 || has_repeated_index(f) || all_collinear(f, points)) {
-      ++degenerate;
-      continue;
+    for (std::uint32_t& v : f) v = canonical[v];
+    std::size_t made = 0;
+    try {
+      made = scene_detail::prepare_face(points, f, k, prepared);
+    } catch (const scene_detail::FormatError& e) {
+      fail(e.what());
     }
-    mesh.faces.push_back(std::move(f));
-    mesh.face_index.push_back(static_cast<std::uint32_t>(k));
-    if (groups) mesh.face_group.push_back(raw.face_group[k]);
+    if (made == 0) ++degenerate;
+    mesh.face_index.insert(mesh.face_index.end(), made, static_cast<std::uint32_t>(k));
+    if (groups) mesh.face_group.insert(mesh.face_group.end(), made, raw.face_group[k]);
   }
-  if (mesh.faces.empty())
+  if (prepared.faces.empty())
     fail("no faces left: all " + std::to_string(raw.faces.size()) + " faces are degenerate");
+  mesh.faces = std::move(prepared.faces);
+  if (prepared.fanned > 0) mesh.fan_edges = std::move(prepared.fan_edges);
   mesh.vertices = std::move(raw.vertices);
   if (groups) mesh.group_names = std::move(raw.group_names);
 
-  std::size_t nonmanifold = count_nonmanifold(mesh.faces);
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  const std::size_t nonmanifold = count_nonmanifold(mesh, uses);
+  const std::size_t inward = component_sides(mesh, uses).inward;
   for (const auto& w : raw.warnings) report.warnings.push_back(path + ": " + w);
   if (degenerate > 0)
     report.warnings.push_back(path + ": " + std::to_string(degenerate) +
@@ -269,8 +244,21 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
   if (nonmanifold > 0)
     report.warnings.push_back(path + ": " + std::to_string(nonmanifold) +
                               (nonmanifold == 1 ? " face is non-manifold (kept)" : " faces are non-manifold (kept)"));
+  if (inward > 0)
+    report.warnings.push_back(path + ": " + std::to_string(inward) +
+                              (inward == 1 ? " closed component is" : " closed components are") +
+                              " wound inward (faces clockwise seen from outside): drawn as turned outward");
+  const std::size_t isolated = count_isolated(mesh, uses);
+  if (mesh.faces.size() > 1 && 2 * isolated > mesh.faces.size())
+    report.warnings.push_back(path + ": " + std::to_string(isolated) + " of " + std::to_string(mesh.faces.size()) +
+                              " faces share no edge with another face (a triangle soup? faces meet only where "
+                              "their corners have equal coordinates)");
   report.degenerate_faces += degenerate;
   report.nonmanifold_faces += nonmanifold;
+  report.welded_vertices += welded;
+  report.fanned_faces += prepared.fanned;
+  report.split_faces += prepared.split;
+  report.inward_components += inward;
   return mesh;
 }
 

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -94,7 +95,21 @@ class TokenReader {
 };
 
 std::string quoted(std::string_view token);  // 'token', shortened when long
-std::string number_text(double v);           // shortest round-trip spelling  // 'token', shortened when long
+std::string number_text(double v);           // shortest round-trip spelling
+
+// Coordinates as a key for "equal as doubles": -0 becomes +0 (NaN never gets this far).
+inline std::array<double, 3> coordinate_key(std::array<double, 3> p) {
+  for (double& v : p)
+    if (v == 0) v = 0.0;
+  return p;
+}
+struct CoordinateHash {
+  std::size_t operator()(const std::array<double, 3>& p) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (double v : p) h ^= std::bit_cast<std::uint64_t>(v) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    return static_cast<std::size_t>(h);
+  }
+};
 
 // Assigns group ids in order of first appearance.
 class GroupTable {

@@ -27,30 +27,18 @@ namespace hlr::scene_detail {
 
 namespace {
 
-struct CornerHash {
-  std::size_t operator()(const std::array<double, 3>& p) const {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (double v : p) {
-      h ^= std::bit_cast<std::uint64_t>(v) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    }
-    return static_cast<std::size_t>(h);
-  }
-};
-
 // Numbers corners by first appearance; equal coordinates (== on double, so -0 == +0) share one.
 class CornerMerger {
  public:
   explicit CornerMerger(RawMesh& mesh) : mesh_(mesh) {}
-  std::uint32_t index(std::array<double, 3> p) {
-    for (double& v : p)
-      if (v == 0) v = 0.0;  // one key for -0 and +0 (NaN never gets here)
-    auto [it, inserted] = ids_.try_emplace(p, static_cast<std::uint32_t>(mesh_.vertices.size()));
+  std::uint32_t index(const std::array<double, 3>& p) {
+    auto [it, inserted] = ids_.try_emplace(coordinate_key(p), static_cast<std::uint32_t>(mesh_.vertices.size()));
     if (inserted) mesh_.vertices.push_back(p);
     return it->second;
   }
  private:
   RawMesh& mesh_;
-  std::unordered_map<std::array<double, 3>, std::uint32_t, CornerHash> ids_;
+  std::unordered_map<std::array<double, 3>, std::uint32_t, CoordinateHash> ids_;
 };
 
 bool equals_ignoring_case(std::string_view a, std::string_view b) {

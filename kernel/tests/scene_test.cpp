@@ -386,7 +386,116 @@ std::vector<BadFile> bad_files() {
        "line 11: vertex 1: z coordinate inf is not a finite number"},
       {"noz.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nend_header\n", "the vertex element has no z property"},
       {"noply.ply", "solid x\n", "not a PLY file"},
+      // A planar bow-tie quad, and a keyhole whose hole pokes out of its outer loop.
+      {"bowtie.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 4\n",
+       "face 0: the polygon crosses itself (a planar face must be a simple polygon)"},
+      {"bad_keyhole.off", "OFF\n6 1 0\n0 0 0\n2 0 0\n2 2 0\n0 2 0\n3 1 0\n1 3 0\n7 0 1 2 3 0 4 5\n",
+       "face 0: its loops cross each other"},
   };
+}
+
+// --- welding and faces as exporters write them ------------------------------------------------
+
+// The undirected edges of a mesh with the number of faces using each.
+std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_counts(const Mesh& m) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> out;
+  for (const auto& f : m.faces)
+    for (std::size_t i = 0; i < f.size(); ++i) ++out[std::minmax(f[i], f[(i + 1) % f.size()])];
+  return out;
+}
+
+TEST(SceneImport, TriangleSoupsAreWeldedInEveryFormat) {
+  // 12 triangles with their own corners: 36 vertices, 8 distinct points.
+  std::vector<std::vector<Face>> faces;
+  for (const char* file : {"/soup_box.obj", "/soup_box.ply", "/../scenes/soup_box.off"}) {
+    ImportReport report;
+    Mesh m = load(kFixtures + file, report);
+    EXPECT_EQ(m.vertices.size(), 36u) << file << ": vertices keep their numbers";
+    EXPECT_EQ(report.welded_vertices, 28u) << file;
+    EXPECT_TRUE(report.warnings.empty()) << file << ": " << report.warnings.front();
+    const auto edges = edge_counts(m);
+    EXPECT_EQ(edges.size(), 18u) << file;
+    for (const auto& [edge, n] : edges) EXPECT_EQ(n, 2) << file << ": every edge shared";
+    for (const auto& f : m.faces)
+      for (std::uint32_t v : f)
+        for (std::uint32_t w = 0; w < v; ++w) EXPECT_NE(m.vertices[w], m.vertices[v]) << "not the first copy";
+    faces.push_back(m.faces);
+  }
+  EXPECT_EQ(faces[0], faces[1]);
+  EXPECT_EQ(faces[0], faces[2]);
+}
+
+TEST(SceneImport, WeldingIsExactAndMinusZeroEqualsZero) {
+  // Vertex 3 is vertex 0 (-0 == 0); vertex 4 differs from vertex 1 in the last bit: not welded.
+  std::string p = temp().write("weld.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n-0 0 0\n1.0000000000000002 0 0\n0 -1 0\n"
+                                           "3 0 1 2\n3 4 3 5\n");
+  ImportReport report;
+  Mesh m = load(p, report);
+  EXPECT_EQ(report.welded_vertices, 1u);
+  EXPECT_EQ(m.faces[1], (Face{4, 0, 5}));
+}
+
+TEST(SceneImport, UnweldableSoupIsAWarning) {
+  // Three triangles that meet nowhere exactly: the user may have given a soup.
+  std::string p = temp().write("soup.off", "OFF\n9 3 0\n0 0 0\n1 0 0\n0 1 0\n1.1 0 0\n1.1 1 0\n0.1 1 0\n"
+                                           "5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n3 6 7 8\n");
+  ImportReport report;
+  load(p, report);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_EQ(report.warnings[0].rfind(p + ": 3 of 3 faces share no edge with another face (a triangle soup?", 0), 0u)
+      << report.warnings[0];
+}
+
+TEST(SceneImport, NonPlanarFacesAreFansFromTheFirstCorner) {
+  // A planar pentagon stays one face; a twisted quad and a twisted pentagon become fans.
+  std::string p = temp().write("twisted.off",
+                               "OFF\n14 3 0\n0 0 0\n2 0 0\n3 1 0\n1 2 0\n-1 1 0\n"
+                               "0 0 5\n1 0 5\n1 1 6\n0 1 5\n"
+                               "0 0 9\n1 0 9\n2 1 9\n1 2 10\n0 1 9\n"
+                               "5 0 1 2 3 4\n4 5 6 7 8\n5 9 10 11 12 13\n");
+  ImportReport report;
+  Mesh m = load(p, report);
+  EXPECT_EQ(m.faces, (std::vector<Face>{{0, 1, 2, 3, 4}, {5, 6, 7}, {5, 7, 8}, {9, 10, 11}, {9, 11, 12}, {9, 12, 13}}));
+  EXPECT_EQ(m.face_index, (std::vector<std::uint32_t>{0, 1, 1, 2, 2, 2}));
+  // Internal fan edges: 5-7 (edge 2 of the first triangle, 0 of the second); 9-11 and 9-12.
+  EXPECT_EQ(m.fan_edges, (std::vector<std::uint8_t>{0, 4, 1, 4, 5, 1}));
+  EXPECT_EQ(report.fanned_faces, 2u);
+  EXPECT_TRUE(report.warnings.empty());
+}
+
+TEST(SceneImport, KeyholeFacesAreSplitIntoTheirRegion) {
+  ImportReport report;
+  Mesh m = load(kFixtures + "/../scenes/keyhole_faces.off", report);
+  EXPECT_EQ(report.split_faces, 2u);
+  EXPECT_EQ(report.degenerate_faces, 0u);
+  // Twice the area of each file face's triangles, all counter-clockwise seen from +z as the
+  // outer loops run: 2 * (16 - 1.5) and 2 * (16 - 4); the floor triangle stays.
+  std::map<std::uint32_t, double> area;
+  for (std::size_t k = 0; k < m.faces.size(); ++k) {
+    const auto& f = m.faces[k];
+    ASSERT_EQ(f.size(), 3u);
+    const auto &a = m.vertices[f[0]], &b = m.vertices[f[1]], &c = m.vertices[f[2]];
+    const double twice = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    EXPECT_GT(twice, 0) << "triangle " << k;
+    area[m.face_index[k]] += twice;
+  }
+  EXPECT_EQ(area[0], 29);
+  EXPECT_EQ(area[1], 24);
+  EXPECT_EQ(area[2], 27);
+  // The hole's edges and the outer edges are used once, the triangulation's diagonals twice.
+  const auto edges = edge_counts(m);
+  for (auto e : {std::pair{0u, 1u}, {0u, 4u}, {4u, 5u}, {0u, 5u}, {6u, 7u}, {10u, 11u}, {10u, 13u}})
+    EXPECT_EQ(edges.at(e), 1) << e.first << "-" << e.second;
+  for (const auto& [edge, n] : edges) EXPECT_LE(n, 2);
+}
+
+TEST(SceneImport, InwardComponentsAreAWarning) {
+  ImportReport report;
+  const std::string path = kFixtures + "/../scenes/mixed_orientation.off";
+  load(path, report);
+  EXPECT_EQ(report.inward_components, 1u);
+  EXPECT_EQ(report.warnings, (std::vector<std::string>{path + ": 1 closed component is wound inward (faces clockwise "
+                                                              "seen from outside): drawn as turned outward"}));
 }
 
 TEST(SceneImport, BadFilesGiveOneLineNamingTheFile) {

@@ -2,7 +2,8 @@
 //
 // build_sources turns the meshes of a scene into the polygons the area sort works on: faces are
 // projected exactly (ViewFrame), back faces of closed, consistently oriented components are
-// removed, faces seen edge-on are dropped (they cover no area), and connected, exactly coplanar
+// removed (a component wound inward is taken as turned outward, decided by the exact sign of its
+// volume), faces seen edge-on are dropped (they cover no area), and connected, exactly coplanar
 // faces are consolidated into one polygon with holes, so a tessellated planar face is one polygon.
 //
 // area_sort solves visibility: the nearest polygon clips the rest into inside and outside lists
@@ -55,9 +56,9 @@ struct SourceStats {
   std::size_t back_faces_removed = 0;
   std::size_t edge_on_faces_removed = 0;
   std::size_t faces_consolidated = 0;  // faces merged into a polygon with other faces
-  std::size_t non_simple_faces_skipped = 0;  // polygon faces whose projection is not simple
   std::size_t sources = 0;
   std::size_t closed_components = 0, open_components = 0;
+  std::size_t inward_components = 0;  // closed components whose faces face inward: culled as turned outward
 };
 
 template <class K>

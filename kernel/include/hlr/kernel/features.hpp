@@ -5,13 +5,17 @@
 //   - crease: it has more than two faces (non-manifold), or two faces whose dihedral angle, the
 //     angle between their normals once the two are oriented alike, is above the crease threshold;
 //   - silhouette: it has two faces and one faces the viewer while the other does not (back-facing
-//     or seen edge-on);
+//     or seen edge-on). In a closed solid the front side is the outside (mesh_edges.hpp
+//     component_sides), whichever way it is wound; an open or inconsistently oriented mesh has two
+//     alike sides: there the edge is a silhouette when one face is seen from one side and the
+//     other from the other side or edge-on. So the feature set does not depend on the winding;
 //   - group: two faces of different face groups (materials, OBJ groups, face colours).
 // An edge that is several of these takes the first in the order silhouette, crease, group.
 // A face's normal follows its corner order (its vector area). Two faces that run their edge in the
-// same direction are oriented alike by reversing the higher-numbered one; this matters when one of
-// them is seen edge-on (silhouette or not).
+// same direction are oriented alike by reversing the higher-numbered one.
 // The internal edges of a tessellated planar face are none of these (their dihedral angle is 0).
+// The internal edges of a non-planar face's fan (Mesh::fan_edges) are feature lines by the crease
+// rule only (DESIGN.md "Feature lines").
 //
 // Everything is decided exactly on the input doubles (CGAL Epeck), so the same edges are found
 // on every kernel. The threshold is the one parameter taken as given: its cosine, rounded to

@@ -1,11 +1,13 @@
-// hlr kernel, mesh edges: which faces use each undirected edge of a mesh, and in which direction.
-// Shared by consolidation and back-face removal (hidden_line) and by feature-edge extraction.
+// hlr kernel, mesh edges: which faces use each undirected edge of a mesh, and in which direction;
+// the mesh's components and which way each closed one faces. Shared by consolidation and
+// back-face removal (hidden_line), feature-edge extraction and import.
 #pragma once
 
 #include <hlr/kernel/scene.hpp>
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <vector>
 
 namespace hlr {
@@ -15,6 +17,7 @@ struct EdgeUse {
   std::uint64_t key;   // (min vertex << 32) | max vertex
   std::uint32_t face;  // index into mesh.faces
   bool forward;        // the face runs min -> max
+  bool fan = false;    // an internal edge of a non-planar face's fan (Mesh::fan_edges)
 };
 
 inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
@@ -30,7 +33,8 @@ inline std::vector<EdgeUse> edge_uses(const Mesh& mesh) {
     const auto& face = mesh.faces[f];
     for (std::size_t i = 0; i < face.size(); ++i) {
       const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
-      uses.push_back({edge_key(a, b), f, a < b});
+      const bool fan = !mesh.fan_edges.empty() && (mesh.fan_edges[f] >> i & 1u);
+      uses.push_back({edge_key(a, b), f, a < b, fan});
     }
   }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
@@ -51,5 +55,33 @@ void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
     first = last;
   }
 }
+
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void join(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the lowest face
+  }
+};
+
+// Components are faces joined across shared edges. A component is closed when every edge has
+// exactly two faces that run it in opposite directions; then the sign of the volume it encloses
+// (exact, from the input doubles) says whether its faces' front sides face outward (+) or inward
+// (-, wound clockwise seen from outside, as exporters with flipped normals write).
+struct ComponentSides {
+  std::vector<std::uint32_t> component;  // per face: the lowest face of its component
+  // Per face: +1 in a closed, outward component, -1 in a closed, inward one, 0 elsewhere (open,
+  // inconsistently oriented, or enclosing no volume: no side is the outside).
+  std::vector<std::int8_t> outward;
+  std::size_t closed = 0, open = 0, inward = 0;  // component counts
+};
+ComponentSides component_sides(const Mesh& mesh, const std::vector<EdgeUse>& uses);
 
 }  // namespace hlr

@@ -1,19 +1,30 @@
 // Scene import: polygon meshes from OFF, OBJ, STL and PLY files, read exactly and completely.
 //
-// What comes back is the file's own data, not a cleaned-up mesh:
+// What comes back is the file's own data, made into simple planar faces that share their edges:
 //   - Coordinates are the doubles the file spells. Text numbers ("0.1") are parsed to the nearest
 //     double, once, and taken as exact from then on (DESIGN.md, exactness contract); binary float32
 //     (STL, PLY float) and float64 (PLY double) values convert to double without rounding.
-//   - Vertices keep the file's order. STL repeats the corner coordinates in every triangle; its
-//     corners are merged when their coordinates are equal as doubles (-0 and +0 count as equal),
-//     so that the mesh's edges are shared again. Nothing else is merged.
-//   - Every face is kept, in file order, whatever the topology around it: non-manifold and
-//     inconsistently oriented faces are kept and counted. Only degenerate faces are skipped
-//     (counted too), and face_index says which face of the file each kept face was.
+//   - Vertices keep the file's order and numbers. Vertices whose coordinates are equal as doubles
+//     (-0 and +0 count as equal) are welded: faces use the first of them, so that a mesh written
+//     with every face's own copies of its corners (STL always, other exporters when they split
+//     vertices for normals or UVs) shares its edges again. Nothing else is merged: coordinates
+//     that differ in the last bit stay apart. STL's corners are numbered by first appearance.
+//   - Faces, in file order, decided exactly on the doubles (face_index says which face of the file
+//     each face came from; one file face may give several):
+//       * corners repeated in a row count once;
+//       * a face that visits a vertex twice (a keyhole face, or two lobes touching at a corner) is
+//         split there into loops; loops in one plane become the triangles of the region inside an
+//         odd number of them (a loop inside another is a hole); loops in different planes are
+//         taken one by one;
+//       * a planar loop is one polygon face and must be simple (else an ImportError);
+//       * a non-planar loop is the fan of triangles from its first corner; the fan's internal
+//         edges are marked in fan_edges (DESIGN.md: feature lines only by the crease rule);
+//       * a loop of fewer than 3 corners, or with all its corners on one line, is degenerate and
+//         skipped (counted); a face with nothing left is a degenerate face.
+//   - Every other face is kept whatever the topology around it: non-manifold and inconsistently
+//     oriented faces are kept and counted.
 //
 // Definitions (applied to the faces kept):
-//   - degenerate: fewer than 3 vertex indices, a vertex index repeated anywhere in the face, or
-//     all its vertices on one line (zero area, coincident points included), decided exactly.
 //   - edge: two cyclically consecutive vertex indices of a face, unordered.
 //   - non-manifold face: a face with an edge that (a) belongs to more than two faces, or
 //     (b) belongs to exactly two faces that run along it in the same direction (an orientation
@@ -30,7 +41,9 @@
 //
 // Errors throw ImportError with one line "FILE: problem": a file that cannot be read, an unknown
 // extension, an empty or truncated file, a syntax error, a non-finite coordinate, a coordinate
-// beyond kMaxImportCoordinate in magnitude, a vertex index out of range, or no face left.
+// beyond kMaxImportCoordinate in magnitude, a vertex index out of range, a planar face that crosses
+// itself, or no face left. Warnings: when more than half of the faces share no edge with another
+// face after welding (a triangle soup), and when closed components are wound inward.
 #pragma once
 
 #include <array>
@@ -50,8 +63,11 @@ inline constexpr double kMaxImportCoordinate = 1e100;
 struct Mesh {
   std::string file;                               // path as given
   std::vector<std::array<double, 3>> vertices;    // as read, in file order (STL: merged corners)
-  std::vector<std::vector<std::uint32_t>> faces;  // vertex indices per face, file order; degenerate faces skipped
-  std::vector<std::uint32_t> face_index;          // faces[k] was face number face_index[k] of the file (from 0)
+  std::vector<std::vector<std::uint32_t>> faces;  // welded vertex indices per face (see above)
+  std::vector<std::uint32_t> face_index;          // faces[k] came from face number face_index[k] of the file (from 0)
+  // Per face, or empty when no face is a fan: bit i set when edge i (corner i to corner i + 1) is
+  // an internal edge of a non-planar face's fan.
+  std::vector<std::uint8_t> fan_edges;
   std::vector<std::int32_t> face_group;           // per face: group id (see above), or empty
   std::vector<std::string> group_names;           // group_names[id]: a readable name of group id
 };
@@ -59,6 +75,10 @@ struct Mesh {
 struct ImportReport {
   std::size_t degenerate_faces = 0;   // skipped
   std::size_t nonmanifold_faces = 0;  // kept
+  std::size_t welded_vertices = 0;    // vertices replaced by an earlier one with equal coordinates
+  std::size_t fanned_faces = 0;       // non-planar faces taken as fans of triangles
+  std::size_t split_faces = 0;        // faces split at a vertex they visit twice
+  std::size_t inward_components = 0;  // closed components wound inward (mesh_edges.hpp)
   std::vector<std::string> warnings;  // one line each, "FILE: ..."
 };
 

@@ -1,0 +1,74 @@
+// component_sides (hlr/kernel/mesh_edges.hpp): components, closedness and the exact sign of the
+// enclosed volume.
+#include <hlr/kernel/mesh_edges.hpp>
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Interval_nt.h>
+
+namespace hlr {
+namespace {
+
+// The sign of the volume a closed component's faces enclose: the sum of the fan tetrahedra's
+// determinants from the component's first corner, in interval arithmetic and, when that does not
+// decide, in rationals. Exact: the determinants are of input doubles.
+int enclosed_volume_sign(const Mesh& mesh, const std::vector<std::uint32_t>& faces) {
+  const auto& o = mesh.vertices[mesh.faces[faces.front()][0]];
+  auto volume = [&](auto zero) {
+    using NT = decltype(zero);
+    NT sum = zero;
+    for (std::uint32_t f : faces) {
+      const auto& face = mesh.faces[f];
+      // An explicit result type: gmpxx would return an expression that refers to dead temporaries.
+      auto d = [&](std::uint32_t v, int axis) -> NT { return NT(mesh.vertices[v][axis]) - NT(o[axis]); };
+      for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+        const std::uint32_t a = face[0], b = face[k], c = face[k + 1];
+        const NT ax = d(a, 0), ay = d(a, 1), az = d(a, 2), bx = d(b, 0), by = d(b, 1), bz = d(b, 2);
+        const NT cx = d(c, 0), cy = d(c, 1), cz = d(c, 2);
+        sum += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+      }
+    }
+    return sum;
+  };
+  {
+    CGAL::Protect_FPU_rounding<true> protect;
+    const CGAL::Interval_nt<false> approx = volume(CGAL::Interval_nt<false>(0));
+    if (approx.inf() > 0) return 1;
+    if (approx.sup() < 0) return -1;
+  }
+  return CGAL::sign(volume(CGAL::Exact_rational(0)));
+}
+
+}  // namespace
+
+ComponentSides component_sides(const Mesh& mesh, const std::vector<EdgeUse>& uses) {
+  const std::size_t nf = mesh.faces.size();
+  UnionFind components(nf);
+  for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
+    for (EdgeUses it = first + 1; it != last; ++it) components.join(first->face, it->face);
+  });
+  std::vector<bool> closed(nf, true);
+  for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
+    const bool manifold_pair = last - first == 2 && first[0].forward != first[1].forward;
+    if (!manifold_pair) closed[components.find(first->face)] = false;
+  });
+  ComponentSides out;
+  out.component.resize(nf);
+  std::vector<std::vector<std::uint32_t>> members(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    out.component[f] = components.find(f);
+    members[out.component[f]].push_back(f);
+  }
+  std::vector<std::int8_t> sign(nf, 0);
+  for (std::uint32_t root = 0; root < nf; ++root) {
+    if (members[root].empty()) continue;
+    ++(closed[root] ? out.closed : out.open);
+    if (!closed[root]) continue;
+    sign[root] = static_cast<std::int8_t>(enclosed_volume_sign(mesh, members[root]));
+    out.inward += sign[root] < 0;
+  }
+  out.outward.resize(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) out.outward[f] = sign[out.component[f]];
+  return out;
+}
+
+}  // namespace hlr

@@ -1,5 +1,6 @@
 // `hlr draw MESH... --view V -o OUT.svg|OUT.dxf|OUT.json|OUT.png [--hidden dashed|none] [--crease DEG]
-//            [--sheet A4] [--scale 1:2] [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
+//            [--sheet A4] [--scale 1:2] [--merge-distance MM]
+//            [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
 #include "line_runs.hpp"
@@ -24,6 +25,7 @@ struct DrawOptions {
   std::string scale;
   int raster = 0;  // pixels; 0: the exact path (or --kernel)
   std::string dash = "arc";
+  double merge_distance = 0.01;  // mm on the sheet
 };
 
 enum class Format { json, svg, dxf, png };
@@ -84,6 +86,13 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   }
   drawing.times.read = read;
   drawing.times.total += read;
+  // What the SVG and DXF merge, for the JSON's stats and the summary (they merge the same).
+  const std::size_t merged = exporter::sheet_segments(drawing, style).merged;
+  drawing.merged_segments = merged;
+  drawing.merge_distance_mm = style.merge_distance;
+  if (settings.progress)
+    std::cerr << "hlr: " << merged << " near-coincident drawing segments merged (within " << style.merge_distance
+              << " mm on the sheet)\n";
   for (std::size_t i = 0; i < files.size(); ++i) {
     switch (formats[i]) {
       case Format::json: files[i]->write(exporter::lines_json(drawing)); break;
@@ -108,6 +117,9 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
             << " intersection)\n"
             << "  " << st.visible_pieces << " visible and " << st.hidden_pieces << " hidden pieces in "
             << drawing.times.total << " s\n";
+  if (merged > 0)
+    std::cout << "  " << merged << " segments merged in the SVG and DXF (lines within " << style.merge_distance
+              << " mm of a line drawn already)\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
   return kExitOk;
 }
@@ -131,6 +143,7 @@ int run(const DrawOptions& options) {
     }
   }
   style.hidden = options.hidden == "dashed";
+  style.merge_distance = options.merge_distance;
   if (options.raster > 0 && options.scene.kernel != "exact") {
     std::cerr << "hlr: --raster and --kernel " << options.scene.kernel
               << " exclude each other (the raster path decides visibility by depth tests, not by a kernel)"
@@ -163,6 +176,12 @@ Subcommand add_draw_command(CLI::App& parent) {
   cmd->add_option("--scale", options->scale,
                   "drawing scale such as 1:2 or 5:1 (default: the largest ISO 5455 scale that fits the sheet)")
       ->type_name("SCALE");
+  cmd->add_option("--merge-distance", options->merge_distance,
+                  "in SVG and DXF, draw lines closer than MM on the sheet once, visible over hidden (0: "
+                  "merge nothing; the JSON keeps every piece)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str()
+      ->type_name("MM");
   cmd->add_option("--raster", options->raster,
                   "decide visibility in image space instead (the P-buffer path, inexact): a Z-buffer N pixels "
                   "along the longer side; needed for .png output")

@@ -58,6 +58,27 @@ int main(int argc, char** argv) {
       "Run 'hlr SUBCOMMAND --help' for a subcommand's options; formats are in docs/FORMATS.md.\n"
       "Exit status: 0 success, 1 bad input or unwritable output, 2 bad command line, 3 internal error.");
 
+  // The first word that is not an option names the subcommand (the top level has no option that
+  // takes a value). CLI11 would call an unknown one an unexpected argument, or say that a
+  // subcommand is required: name it, and the ones there are.
+  std::string expected;
+  for (std::size_t i = 0; i < commands.size(); ++i)
+    expected += (i == 0 ? "" : i + 1 == commands.size() ? " or " : ", ") + commands[i].app->get_name();
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (!word.empty() && word[0] == '-') continue;
+    bool known = false;
+    for (const auto& command : commands) known |= command.app->get_name() == word;
+    if (known) break;
+    std::cerr << "hlr: unknown subcommand '" << one_line(word) << "' (expected " << expected
+              << "; see 'hlr --help')" << std::endl;
+    return kExitUsage;
+  }
+  if (argc == 1) {
+    std::cerr << "hlr: a subcommand is required (" << expected << "; see 'hlr --help')" << std::endl;
+    return kExitUsage;
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

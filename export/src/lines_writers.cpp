@@ -158,23 +158,24 @@ std::string shorten(const std::string& s, std::size_t chars) {
 // ---------------------------------------------------------------------------------------------
 // Chaining.
 
+// Chains of one class; segments of different meshes are never joined (each part's lines are its own).
 std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segments, bool visible) {
   std::vector<const DrawingSegment*> mine;  // this class's segments of non-zero length, in input order
   for (const auto& s : segments)
     if (s.visible == visible && s.a != s.b) mine.push_back(&s);
   // Exact equality of endpoints: -0.0 and 0.0 compare equal, as they should.
-  std::map<Point2, std::vector<std::size_t>> ending_at;
+  using End = std::pair<std::uint32_t, Point2>;  // mesh, point
+  std::map<End, std::vector<std::size_t>> ending_at;
   for (std::size_t i = 0; i < mine.size(); ++i) {
-    ending_at[mine[i]->a].push_back(i);
-    ending_at[mine[i]->b].push_back(i);
+    ending_at[{mine[i]->mesh, mine[i]->a}].push_back(i);
+    ending_at[{mine[i]->mesh, mine[i]->b}].push_back(i);
   }
   std::vector<bool> used(mine.size(), false);
   auto other_end = [&](std::size_t i, const Point2& p) { return mine[i]->a == p ? mine[i]->b : mine[i]->a; };
-  auto degree = [&](const Point2& p) { return ending_at.find(p)->second.size(); };
   // Walks on from `end`, arrived at along segment `via`, through points of degree two.
   auto walk = [&](Point2 end, std::size_t via, std::vector<Point2>& points) {
     for (;;) {
-      const auto& incident = ending_at.find(end)->second;
+      const auto& incident = ending_at.find({mine[via]->mesh, end})->second;
       if (incident.size() != 2) return;
       const std::size_t next = incident[0] == via ? incident[1] : incident[0];
       if (used[next]) return;
@@ -191,10 +192,12 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
     used[seed] = true;
     DrawingPolyline chain;
     chain.visible = visible;
+    chain.mesh = mine[seed]->mesh;
     chain.points = {mine[seed]->a, mine[seed]->b};
     walk(mine[seed]->b, seed, chain.points);
     const Point2 start = chain.points.front();
-    if (chain.points.size() > 2 && chain.points.back() == start && degree(start) == 2) {
+    if (chain.points.size() > 2 && chain.points.back() == start &&
+        ending_at.find({chain.mesh, start})->second.size() == 2) {
       chain.points.pop_back();  // went round a loop
       chain.closed = true;
     } else {
@@ -386,6 +389,10 @@ std::string lines_json(const LineDrawing& drawing) {
       {"drawn_hidden_length", drawing.hidden_length()},
       {"crease_degrees", drawing.crease_degrees},
   };
+  if (drawing.merged_segments) {
+    out["stats"]["merged_segments"] = *drawing.merged_segments;
+    out["stats"]["merge_distance_mm"] = drawing.merge_distance_mm;
+  }
   return out.dump(1) + "\n";
 }
 
@@ -407,7 +414,11 @@ std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
   svg_frame(out, sheet, l);
   svg_title_block(out, drawing, l, scale);
 
-  const auto chains = chain_segments(drawing.segments);
+  // Each part's lines in a group of its own inside the class's group, so that a part can be
+  // switched off: ids are unique ("part-NAME-visible", "part-NAME-hidden"), the class names the
+  // part in both.
+  const auto chains = chain_segments(sheet_segments(drawing, style).segments);
+  const auto names = part_names(drawing);
   auto group = [&](bool visible) {
     if (visible)
       out << "<g id=\"visible\" fill=\"none\" stroke=\"#000\" stroke-width=\"" << mm(visible_width) << '"';
@@ -415,12 +426,20 @@ std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
       out << "<g id=\"hidden\" fill=\"none\" stroke=\"#000\" stroke-width=\"" << mm(hidden_width)
           << "\" stroke-dasharray=\"" << mm(hidden_dash) << ' ' << mm(hidden_gap) << '"';
     out << " stroke-linecap=\"butt\" stroke-linejoin=\"round\">\n";
-    for (const auto& c : chains) {
-      if (c.visible != visible) continue;
-      out << "<path d=\"";
-      for (std::size_t i = 0; i < c.points.size(); ++i)
-        out << (i == 0 ? 'M' : 'L') << mm(sheet_x(c.points[i][0])) << ' ' << mm(sheet_y(c.points[i][1]));
-      out << (c.closed ? "Z" : "") << "\"/>\n";
+    for (std::uint32_t part = 0; part < names.size(); ++part) {
+      bool open = false;
+      for (const auto& c : chains) {
+        if (c.visible != visible || c.mesh != part) continue;
+        if (!open)
+          out << "<g id=\"part-" << xml_escape(names[part]) << (visible ? "-visible" : "-hidden") << "\" class=\"part-"
+              << xml_escape(names[part]) << "\">\n";
+        open = true;
+        out << "<path d=\"";
+        for (std::size_t i = 0; i < c.points.size(); ++i)
+          out << (i == 0 ? 'M' : 'L') << mm(sheet_x(c.points[i][0])) << ' ' << mm(sheet_y(c.points[i][1]));
+        out << (c.closed ? "Z" : "") << "\"/>\n";
+      }
+      if (open) out << "</g>\n";
     }
     out << "</g>\n";
   };
@@ -480,13 +499,28 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
                                           hidden_dash + hidden_gap, dashed));
   body.tableEnd();
 
+  // One mesh: layers VISIBLE and HIDDEN. Several: a pair per part, NAME-VISIBLE and NAME-HIDDEN
+  // with the part's name in upper case (DXF layer names are compared in any case), every part's
+  // pair defined even where it has no line, so that a CAD user finds every part.
+  const auto names = part_names(drawing);
+  const bool per_part = drawing.input.files.size() > 1;
+  auto layer = [&](std::uint32_t mesh, bool visible) {
+    std::string name = visible ? "VISIBLE" : "HIDDEN";
+    if (!per_part) return name;
+    std::string part = mesh < names.size() ? names[mesh] : "MESH-" + std::to_string(mesh);
+    for (char& c : part) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return part + "-" + name;
+  };
+  const std::uint32_t layer_pairs = per_part ? std::uint32_t(names.size()) : 1;
   // Lineweights in hundredths of a millimetre; -3 is "default".
-  body.tableLayers(3);
+  body.tableLayers(1 + 2 * int(layer_pairs));
   dxf.writeLayer(body, DL_LayerData("0", 0), DL_Attributes("", 7, -3, "CONTINUOUS", 1.0));
-  dxf.writeLayer(body, DL_LayerData("VISIBLE", 0),
-                 DL_Attributes("", 7, static_cast<int>(visible_width * 100), "CONTINUOUS", 1.0));
-  dxf.writeLayer(body, DL_LayerData("HIDDEN", 0),
-                 DL_Attributes("", 8, static_cast<int>(hidden_width * 100), hidden_ltype, 1.0));
+  for (std::uint32_t part = 0; part < layer_pairs; ++part) {
+    dxf.writeLayer(body, DL_LayerData(layer(part, true), 0),
+                   DL_Attributes("", 7, static_cast<int>(visible_width * 100), "CONTINUOUS", 1.0));
+    dxf.writeLayer(body, DL_LayerData(layer(part, false), 0),
+                   DL_Attributes("", 8, static_cast<int>(hidden_width * 100), hidden_ltype, 1.0));
+  }
   body.tableEnd();
 
   body.tableStyle(1);
@@ -511,12 +545,12 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
 
   // Hidden first, so that viewers drawing in file order put the visible lines on top.
   body.sectionEntities();
-  auto chains = chain_segments(drawing.segments);
+  auto chains = chain_segments(sheet_segments(drawing, style).segments);
   std::stable_partition(chains.begin(), chains.end(), [](const DrawingPolyline& c) { return !c.visible; });
   for (const auto& c : chains) {
     if (!c.visible && !style.hidden) continue;
     dxf.writePolyline(body, DL_PolylineData(static_cast<int>(c.points.size()), 0, 0, c.closed ? 1 : 0),
-                      DL_Attributes(c.visible ? "VISIBLE" : "HIDDEN", 256, -1, "BYLAYER", 1.0));
+                      DL_Attributes(layer(c.mesh, c.visible), 256, -1, "BYLAYER", 1.0));
     for (const Point2& p : c.points) dxf.writeVertex(body, DL_VertexData(p[0], p[1], 0.0, 0.0));
     dxf.writePolylineEnd(body);
   }

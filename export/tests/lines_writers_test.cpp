@@ -6,13 +6,17 @@
 // export_samples_check runs tests/tools/check_drawing.py (ezdxf, rsvg-convert) on them.
 #include <hlr/export/lines.hpp>
 
+#include "svg_reader.hpp"
+
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
-#include <expat.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
+#include <set>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -26,7 +30,7 @@ using namespace hlr;
 using namespace hlr::exporter;
 using nlohmann::json;
 
-DrawingSegment seg(Point2 a, Point2 b, bool visible = true) { return {a, b, visible}; }
+DrawingSegment seg(Point2 a, Point2 b, bool visible = true, std::uint32_t mesh = 0) { return {a, b, visible, mesh}; }
 
 // A drawing made of `segments` only (pieces follow them, at z = 0, as creases).
 LineDrawing drawing_of(std::vector<DrawingSegment> segments) {
@@ -274,65 +278,9 @@ TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {
 // --------------------------------------------------------------------------------------------
 // SVG, read back with expat.
 
-struct SvgElement {
-  std::string name;
-  std::map<std::string, std::string> attributes;
-  std::string group;  // id of the enclosing <g>, if any
-  std::string text;
-};
-
-struct SvgDocument {
-  bool well_formed = false;
-  std::string error;
-  std::vector<SvgElement> elements;
-  std::vector<std::size_t> open;  // stack of indices into elements
-
-  const SvgElement* find(const std::string& name, const std::string& id) const {
-    for (const auto& e : elements)
-      if (e.name == name && e.attributes.count("id") && e.attributes.at("id") == id) return &e;
-    return nullptr;
-  }
-  std::vector<const SvgElement*> in_group(const std::string& name, const std::string& group) const {
-    std::vector<const SvgElement*> out;
-    for (const auto& e : elements)
-      if (e.name == name && e.group == group) out.push_back(&e);
-    return out;
-  }
-  std::ptrdiff_t position(const std::string& name, const std::string& id) const {
-    const SvgElement* e = find(name, id);
-    return e ? e - elements.data() : -1;
-  }
-};
-
-SvgDocument parse_svg(const std::string& text) {
-  SvgDocument doc;
-  XML_Parser parser = XML_ParserCreate("UTF-8");
-  XML_SetUserData(parser, &doc);
-  XML_SetElementHandler(
-      parser,
-      [](void* data, const XML_Char* name, const XML_Char** attributes) {
-        auto& d = *static_cast<SvgDocument*>(data);
-        SvgElement e;
-        e.name = name;
-        for (int i = 0; attributes[i]; i += 2) e.attributes[attributes[i]] = attributes[i + 1];
-        for (auto it = d.open.rbegin(); it != d.open.rend(); ++it)
-          if (d.elements[*it].name == "g") {
-            e.group = d.elements[*it].attributes["id"];
-            break;
-          }
-        d.open.push_back(d.elements.size());
-        d.elements.push_back(std::move(e));
-      },
-      [](void* data, const XML_Char*) { static_cast<SvgDocument*>(data)->open.pop_back(); });
-  XML_SetCharacterDataHandler(parser, [](void* data, const XML_Char* s, int len) {
-    auto& d = *static_cast<SvgDocument*>(data);
-    if (!d.open.empty()) d.elements[d.open.back()].text.append(s, len);
-  });
-  doc.well_formed = XML_Parse(parser, text.data(), static_cast<int>(text.size()), 1) == XML_STATUS_OK;
-  if (!doc.well_formed) doc.error = XML_ErrorString(XML_GetErrorCode(parser));
-  XML_ParserFree(parser);
-  return doc;
-}
+using hlr::test::parse_svg;
+using hlr::test::SvgDocument;
+using hlr::test::SvgElement;
 
 LineDrawing box_with_hidden_hole() {
   auto segments = loop({{0, 0}, {100, 0}, {100, 50}, {0, 50}});
@@ -533,6 +481,213 @@ TEST(LinesDxf, LtscaleIsOneOverTheScaleAndHandseedIsFree) {
   }
 }
 
+
+// --------------------------------------------------------------------------------------------
+// Near-coincident segments (merge_segments) and parts.
+
+TEST(MergeSegments, HiddenUnderANearlyCoincidentVisibleLineIsDropped) {
+  // Two parts whose edges are 1e-7 apart: the exact engine gives a visible and a hidden line.
+  const auto r = merge_segments({seg({0, 1e-7}, {10, 1e-7}, false, 1), seg({0, 0}, {10, 0}, true, 0)}, 0.01);
+  ASSERT_EQ(r.segments.size(), 1u);
+  EXPECT_TRUE(r.segments[0].visible);
+  EXPECT_EQ(r.segments[0].mesh, 0u);
+  EXPECT_EQ(r.merged, 1u);
+}
+
+TEST(MergeSegments, DuplicateOfOneClassKeepsTheFirst) {
+  const auto r = merge_segments({seg({0, 0}, {10, 0}, true, 0), seg({10, 1e-9}, {1e-9, 0}, true, 1)}, 0.01);
+  ASSERT_EQ(r.segments.size(), 1u);
+  EXPECT_EQ(r.segments[0].mesh, 0u);  // the lower mesh (the first kept)
+  EXPECT_EQ(r.merged, 1u);
+}
+
+TEST(MergeSegments, CollinearOverlapIsTrimmedOntoTheKeptEnd) {
+  // The hidden line runs from -5 to 5 along a visible one from 0 to 10, 1e-6 off it: what is left
+  // is -5..0, ending exactly at the visible line's end.
+  const auto r = merge_segments({seg({0, 0}, {10, 0}), seg({-5, 1e-6}, {5, 1e-6}, false)}, 0.01);
+  ASSERT_EQ(r.segments.size(), 2u);
+  EXPECT_EQ(r.segments[0].a, (Point2{0, 0}));
+  EXPECT_FALSE(r.segments[1].visible);
+  EXPECT_EQ(r.segments[1].a, (Point2{-5, 1e-6}));
+  EXPECT_EQ(r.segments[1].b, (Point2{0, 0}));
+  EXPECT_EQ(r.merged, 1u);
+  // A hidden line longer at both ends keeps both ends, with a gap where the visible one is.
+  const auto both = merge_segments({seg({0, 0}, {10, 0}), seg({20, 0}, {-10, 0}, false)}, 0.01);
+  ASSERT_EQ(both.segments.size(), 3u);
+  EXPECT_EQ(both.segments[1].a, (Point2{20, 0}));
+  EXPECT_EQ(both.segments[1].b, (Point2{10, 0}));
+  EXPECT_EQ(both.segments[2].a, (Point2{0, 0}));
+  EXPECT_EQ(both.segments[2].b, (Point2{-10, 0}));
+}
+
+TEST(MergeSegments, CrossingsJunctionsAndDistantParallelsStayWhole) {
+  const std::vector<DrawingSegment> in{
+      seg({0, 0}, {10, 0}),
+      seg({5, -5}, {5, 5}, false),      // crosses
+      seg({3, 0}, {3, 4}),              // T-junction on it
+      seg({10, 0}, {12, 0.2}),          // meets its end at about 5.7 degrees
+      seg({0, 0.02}, {10, 0.02}, false),  // parallel, 0.02 away: farther than the distance
+      seg({0, 0}, {0.005, 0}, false),   // shorter than the distance, but under the line: dropped
+  };
+  const auto r = merge_segments(in, 0.01);
+  ASSERT_EQ(r.segments.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(r.segments[i].a, in[i].a) << i;
+    EXPECT_EQ(r.segments[i].b, in[i].b) << i;
+  }
+  EXPECT_EQ(r.merged, 1u);
+  // Zero distance merges nothing.
+  const auto none = merge_segments(in, 0);
+  EXPECT_EQ(none.segments.size(), in.size());
+  EXPECT_EQ(none.merged, 0u);
+}
+
+TEST(MergeSegments, SliversAreDroppedAndTheRestKeepsInputOrder) {
+  // The second visible line sticks out 0.004 past the first: the sliver goes.
+  const auto r = merge_segments({seg({0, 0}, {10, 0}), seg({-0.004, 0}, {10, 0}), seg({0, 5}, {1, 5})}, 0.01);
+  ASSERT_EQ(r.segments.size(), 2u);
+  EXPECT_EQ(r.segments[1].a, (Point2{0, 5}));
+  EXPECT_EQ(r.merged, 1u);
+}
+
+TEST(MergeSegments, ManySegmentsThroughTheGrid) {
+  // A tessellated circle of 20000 segments, and the same circle moved by 1e-7 as a second part's
+  // hidden lines, given first: every hidden one goes, every visible one stays.
+  std::vector<DrawingSegment> in;
+  const int n = 20000;
+  auto at = [&](int i, double r, double dx) {
+    return Point2{dx + r * std::cos(2 * M_PI * i / n), r * std::sin(2 * M_PI * i / n)};
+  };
+  for (int i = 0; i < n; ++i) in.push_back(seg(at(i, 100, 1e-7), at(i + 1, 100, 1e-7), false, 1));
+  for (int i = 0; i < n; ++i) in.push_back(seg(at(i, 100, 0), at(i + 1, 100, 0), true, 0));
+  // Random short segments elsewhere, none near the circle: untouched.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-50, 50), step(-1, 1);
+  for (int i = 0; i < 2000; ++i) {
+    const Point2 a{coordinate(random), coordinate(random)};
+    in.push_back(seg(a, {a[0] + step(random), a[1] + step(random)}, i % 2 == 0, 2));
+  }
+  const auto r = merge_segments(in, 0.01);
+  std::size_t visible = 0, hidden_of_circle = 0, random_kept = 0;
+  for (const auto& s : r.segments) {
+    visible += s.visible && s.mesh == 0;
+    hidden_of_circle += !s.visible && s.mesh == 1;
+    random_kept += s.mesh == 2;
+  }
+  EXPECT_EQ(visible, std::size_t(n));
+  EXPECT_EQ(hidden_of_circle, 0u);
+  EXPECT_GE(r.merged, std::size_t(n));
+  // The random ones may cover each other now and then, but nearly all stay.
+  EXPECT_GT(random_kept, 1950u);
+}
+
+TEST(SheetSegments, DistanceIsMillimetresOnTheSheet) {
+  // 100 x 50 at 2:1: 0.01 mm on the sheet is 0.005 in the model.
+  LineDrawing d = box_with_hidden_hole();
+  d.segments.push_back(seg({0, 0.004}, {100, 0.004}, false));  // within 0.005
+  d.segments.push_back(seg({0, 49.994}, {100, 49.994}, false));  // 0.006 off the top: kept
+  const auto r = sheet_segments(d, a4());
+  EXPECT_EQ(r.merged, 1u);
+  EXPECT_EQ(r.segments.size(), d.segments.size() - 1);
+  DrawingStyle coarse = a4();
+  coarse.merge_distance = 0.02;
+  EXPECT_EQ(sheet_segments(d, coarse).merged, 2u);
+  DrawingStyle visible_only = a4();
+  visible_only.hidden = false;
+  EXPECT_EQ(sheet_segments(d, visible_only).merged, 0u);
+  // The SVG and the DXF draw the merged segments: one hidden path fewer.
+  const SvgDocument doc = parse_svg(lines_svg(d, a4()));
+  EXPECT_EQ(doc.in_group("path", "hidden").size(), 3u);
+}
+
+TEST(PartNames, StemsMadeIdSafeAndUnique) {
+  LineDrawing d;
+  d.input.files = {"a/bolt.off", "b/Bolt.stl", "nut v2.obj", "/x/.off", "ünï.ply", "bolt-2.off", "dir.d/plate"};
+  d.segments.push_back(seg({0, 0}, {1, 0}, true, 8));
+  EXPECT_EQ(part_names(d), (std::vector<std::string>{"bolt", "Bolt-2", "nut_v2", "_off", "_n_", "bolt-2-2", "plate",
+                                                     "mesh-7", "mesh-8"}));
+}
+
+// Three parts, the first and the last with lines of both classes, the middle one entirely hidden.
+LineDrawing three_parts() {
+  std::vector<DrawingSegment> segments = loop({{0, 0}, {100, 0}, {100, 50}, {0, 50}});
+  for (auto& s : loop({{40, 10}, {60, 10}, {60, 30}, {40, 30}}, false)) segments.push_back(s), segments.back().mesh = 1;
+  for (auto& s : loop({{110, 0}, {130, 0}, {130, 50}, {110, 50}})) segments.push_back(s), segments.back().mesh = 2;
+  segments.push_back(seg({10, 0}, {10, 50}, false, 0));
+  segments.push_back(seg({120, 0}, {120, 50}, false, 2));
+  LineDrawing d = drawing_of(segments);
+  d.input.files = {"parts/bolt.off", "parts/bolt.stl", "nut.off"};
+  return d;
+}
+
+TEST(LinesSvg, EachPartInAGroupInsideTheClassGroups) {
+  const std::string svg = lines_svg(three_parts(), a4());
+  const SvgDocument doc = parse_svg(svg);
+  ASSERT_TRUE(doc.well_formed) << doc.error;
+  std::set<std::string> ids;
+  for (const auto& e : doc.elements)
+    if (e.attributes.count("id")) {
+      EXPECT_TRUE(ids.insert(e.attributes.at("id")).second) << "repeated id " << e.attributes.at("id");
+    }
+  struct Want {
+    std::string id, klass, outer;
+    std::size_t paths;
+  };
+  for (const Want& w : {Want{"part-bolt-visible", "part-bolt", "visible", 1}, Want{"part-bolt-hidden", "part-bolt", "hidden", 1},
+                        Want{"part-bolt-2-hidden", "part-bolt-2", "hidden", 1},
+                        Want{"part-nut-visible", "part-nut", "visible", 1}, Want{"part-nut-hidden", "part-nut", "hidden", 1}}) {
+    SCOPED_TRACE(w.id);
+    const SvgElement* g = doc.find("g", w.id);
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->group, w.outer);
+    EXPECT_EQ(g->attributes.at("class"), w.klass);
+    EXPECT_EQ(doc.in_group("path", w.id).size(), w.paths);
+  }
+  EXPECT_FALSE(doc.find("g", "part-bolt-2-visible"));  // nothing of it is visible: no empty group
+  // Every path lies in a part group inside the visible or the hidden group.
+  for (const auto* path : doc.in_group("path", "visible")) EXPECT_EQ(path->group.rfind("part-", 0), 0u);
+  for (const auto* path : doc.in_group("path", "hidden")) EXPECT_EQ(path->group.rfind("part-", 0), 0u);
+  EXPECT_EQ(doc.in_group("path", "visible").size() + doc.in_group("path", "hidden").size(), 5u);
+}
+
+TEST(LinesSvg, PartsAreNeverChainedTogether) {
+  // Two parts' segments meet end to end at (10, 0): two paths, not one.
+  LineDrawing d = drawing_of({seg({0, 0}, {10, 0}, true, 0), seg({10, 0}, {20, 0}, true, 1)});
+  d.input.files = {"a.off", "b.off"};
+  const SvgDocument doc = parse_svg(lines_svg(d, a4()));
+  EXPECT_EQ(doc.in_group("path", "part-a-visible").size(), 1u);
+  EXPECT_EQ(doc.in_group("path", "part-b-visible").size(), 1u);
+}
+
+TEST(LinesDxf, OneLayerPairPerPartWhenTheSceneHasSeveralMeshes) {
+  const DxfReadBack back = read_dxf(lines_dxf(three_parts(), a4()));
+  for (const char* name : {"BOLT-VISIBLE", "BOLT-HIDDEN", "BOLT-2-VISIBLE", "BOLT-2-HIDDEN", "NUT-VISIBLE", "NUT-HIDDEN"})
+    EXPECT_TRUE(back.layers.count(name)) << name;
+  EXPECT_FALSE(back.layers.count("VISIBLE"));
+  EXPECT_FALSE(back.layers.count("HIDDEN"));
+  EXPECT_EQ(back.layer_linetype.at("NUT-HIDDEN"), "HIDDEN");
+  EXPECT_EQ(back.layer_linetype.at("BOLT-2-VISIBLE"), "CONTINUOUS");
+  EXPECT_EQ(back.layer_lineweight.at("BOLT-VISIBLE"), 50);
+  std::map<std::string, int> entities;
+  for (const auto& p : back.polylines) ++entities[p.layer];
+  EXPECT_EQ(entities, (std::map<std::string, int>{
+                          {"BOLT-VISIBLE", 1}, {"BOLT-HIDDEN", 1}, {"BOLT-2-HIDDEN", 1}, {"NUT-VISIBLE", 1}, {"NUT-HIDDEN", 1}}));
+  // One mesh: VISIBLE and HIDDEN as before.
+  const DxfReadBack one = read_dxf(lines_dxf(box_with_hidden_hole(), a4()));
+  EXPECT_TRUE(one.layers.count("VISIBLE") && one.layers.count("HIDDEN"));
+  EXPECT_FALSE(one.layers.count("PART-VISIBLE"));
+}
+
+TEST(LinesJson, MergedSegmentsInStatsWhenKnown) {
+  LineDrawing d = box_with_hidden_hole();
+  EXPECT_FALSE(json::parse(lines_json(d))["stats"].contains("merged_segments"));
+  d.merged_segments = 3;
+  d.merge_distance_mm = 0.01;
+  const json j = json::parse(lines_json(d));
+  EXPECT_EQ(j["stats"]["merged_segments"], 3);
+  EXPECT_EQ(j["stats"]["merge_distance_mm"], 0.01);
+}
+
 // --------------------------------------------------------------------------------------------
 // Samples for tests/tools/check_drawing.py.
 
@@ -573,6 +728,9 @@ int write_samples(const std::filesystem::path& dir) {
   const LineDrawing big = drawing_of(loop({{0, 0}, {1000, 0}, {1000, 100}, {0, 100}}));
   write("big_a3.svg", lines_svg(big, DrawingStyle{*sheet_by_name("A3"), std::nullopt, true}));
   write("big_a3.dxf", lines_dxf(big, DrawingStyle{*sheet_by_name("A3"), std::nullopt, true}));
+  const LineDrawing parts = three_parts();
+  write("parts.svg", lines_svg(parts, a4_style));
+  write("parts.dxf", lines_dxf(parts, a4_style));
   write("empty.svg", lines_svg(LineDrawing{}, a4_style));
   write("empty.dxf", lines_dxf(LineDrawing{}, a4_style));
   write("empty.json", lines_json(LineDrawing{}));

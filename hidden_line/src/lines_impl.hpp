@@ -352,6 +352,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
     detail::ImageLine<K> line;
     FT t0, t1;
     bool visible;
+    std::uint32_t mesh;
   };
   std::vector<Span> spans;
   CGAL::Bbox_2 domain;
@@ -361,7 +362,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
       const detail::ImageLine<K> image(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y));
       domain += image.bbox();
       for (const auto& p : l.pieces)
-        if (p.visible == visible) spans.push_back({image, p.t0, p.t1, visible});
+        if (p.visible == visible) spans.push_back({image, p.t0, p.t1, visible, l.mesh});
     }
 
   // Visible spans first, then hidden ones; each loses what earlier, collinear spans already draw.
@@ -383,7 +384,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
     std::sort(covered.begin(), covered.end());
     FT from = span.t0;
     auto emit = [&](const FT& t0, const FT& t1) {
-      const DrawnSegment<K> d{span.line.at(t0), span.line.at(t1), span.visible};
+      const DrawnSegment<K> d{span.line.at(t0), span.line.at(t1), span.visible, span.mesh};
       grid.insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
       out.push_back(d);
     };

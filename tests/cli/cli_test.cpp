@@ -1,6 +1,8 @@
 // End-to-end tests of `hlr clip` and `hlr surfaces`: the program is run as a user runs it, and its exit code, stdout,
 // stderr and output file are checked. Results are checked exactly, with GMP rationals read from the
 // output's "outer_exact" / "holes_exact" strings, not with the program's own arithmetic.
+#include "svg_reader.hpp"
+
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -875,6 +877,87 @@ TEST_F(CliDraw, RasterOptionMistakesAreErrors) {
   expect_failure({cube, "--raster", "256", "--kernel", "epick", "-o", out("c.png").string()}, 2, "hlr: --raster");
   for (const char* bad : {"8", "100000", "big"}) expect_failure({cube, "--raster", bad, "-o", out("c.png").string()}, 2, "");
   expect_failure({cube, "--raster", "256", "--dash", "dotted", "-o", out("c.png").string()}, 2, "");
+}
+
+// Two parts (tests/cli/parts/): a cube, and behind it a box whose left and top edges lie 1e-7 inside
+// the cube's outline in the front view. The JSON keeps both lines; the SVG and DXF draw one.
+const fs::path kParts = HLR_CLI_PARTS;
+
+TEST_F(CliDraw, NearlyCoincidentEdgesOfTwoPartsAreDrawnOnceInTheirPartGroups) {
+  const std::string front = (kParts / "front_box.off").string(), back = (kParts / "back_box.off").string();
+  Outcome run = hlr({"draw", front, back, "--view", "front", "-o", out("p.svg").string(), "-o", out("p.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("2 segments merged in the SVG and DXF"), std::string::npos) << run.out;
+
+  // The JSON: the cube's left edge visible at x = 0, the box's hidden at x = 1e-7, both there.
+  const json doc = json::parse(slurp(out("p.json")));
+  bool cube_left = false, box_left = false;
+  for (const auto& line : doc.at("lines")) {
+    const double ax = line.at("a").at(0), bx = line.at("b").at(0);
+    if (ax != bx) continue;  // vertical lines only
+    if (ax == 0 && line.at("mesh") == 0 && line.at("visible") == true) cube_left = true;
+    if (ax == 1e-7 && line.at("mesh") == 1 && line.at("visible") == false) box_left = true;
+  }
+  EXPECT_TRUE(cube_left && box_left) << doc.at("lines");
+  EXPECT_EQ(doc.at("stats").at("merged_segments"), 2);
+  EXPECT_EQ(doc.at("stats").at("merge_distance_mm"), 0.01);
+
+  // The SVG: each part in its group; the box has no hidden line left (its left and top edges are
+  // under the cube's visible outline), so one solid line is drawn at the left, not a dashed one too.
+  const auto svg = hlr::test::parse_svg(slurp(out("p.svg")));
+  ASSERT_TRUE(svg.well_formed) << svg.error;
+  ASSERT_TRUE(svg.find("g", "part-front_box-visible"));
+  ASSERT_TRUE(svg.find("g", "part-back_box-visible"));
+  EXPECT_EQ(svg.find("g", "part-front_box-visible")->group, "visible");
+  EXPECT_EQ(svg.in_group("path", "part-front_box-visible").size(), 1u);  // the square
+  EXPECT_EQ(svg.in_group("path", "part-back_box-visible").size(), 1u);   // what sticks out on the right
+  EXPECT_TRUE(svg.in_group("path", "hidden").empty());
+
+  // Merging off: the box's hidden edges come back, dashed, in its hidden group.
+  run = hlr({"draw", front, back, "--view", "front", "--merge-distance", "0", "-o", out("p0.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto unmerged = hlr::test::parse_svg(slurp(out("p0.svg")));
+  ASSERT_TRUE(unmerged.find("g", "part-back_box-hidden"));
+  EXPECT_EQ(unmerged.find("g", "part-back_box-hidden")->group, "hidden");
+  EXPECT_EQ(unmerged.in_group("path", "part-back_box-hidden").size(), 1u);  // left and top edges, chained
+  EXPECT_FALSE(unmerged.find("g", "part-front_box-hidden"));
+}
+
+TEST_F(CliDraw, EntirelyHiddenPartIsStillDrawnDashed) {
+  // A small cube behind the box, entirely hidden by it: all of its lines are dashed, in its hidden
+  // group.
+  const std::string small = write_input("small.off", "OFF\n8 6 0\n2 40 2\n2 40 8\n2 45 2\n2 45 8\n8 40 2\n8 40 8\n8 45 2\n8 45 8\n"
+                                                     "4 0 2 6 4\n4 1 5 7 3\n4 0 4 5 1\n4 2 3 7 6\n4 0 1 3 2\n4 4 6 7 5\n").string();
+  const std::string back = (kParts / "back_box.off").string();
+  Outcome run = hlr({"draw", small, back, "--view", "front", "-o", out("h.svg").string(), "-o", out("h.dxf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto svg = hlr::test::parse_svg(slurp(out("h.svg")));
+  EXPECT_FALSE(svg.find("g", "part-back_box-hidden"));
+  EXPECT_FALSE(svg.find("g", "part-small-visible"));
+  ASSERT_TRUE(svg.find("g", "part-small-hidden"));
+  EXPECT_EQ(svg.in_group("path", "part-small-hidden").size(), 1u);  // its outline, closed
+  const std::string dxf = slurp(out("h.dxf"));
+  for (const char* layer : {"SMALL-VISIBLE", "SMALL-HIDDEN", "BACK_BOX-VISIBLE", "BACK_BOX-HIDDEN"})
+    EXPECT_NE(dxf.find(std::string("\n") + layer + "\n"), std::string::npos) << layer;
+}
+
+TEST_F(CliDraw, BadMergeDistanceIsAUsageError) {
+  const std::string cube = (kScenes / "cube.off").string();
+  for (const char* bad : {"-0.01", "2", "fine"}) expect_failure({cube, "--merge-distance", bad, "-o", out("c.svg").string()}, 2, "hlr: ");
+}
+
+TEST_F(CliDraw, UnknownSubcommandIsNamed) {
+  Outcome run = hlr({"drwa", (kScenes / "cube.off").string(), "-o", out("c.svg").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, check, surfaces or clip; see 'hlr --help')\n");
+  EXPECT_TRUE(entries(dir_ / "out").empty());
+  run = hlr({});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err, "hlr: a subcommand is required (draw, check, surfaces or clip; see 'hlr --help')\n");
+  // Options before the subcommand still work; --help and --version too.
+  EXPECT_EQ(hlr({"--version"}).exit_code, 0);
+  EXPECT_EQ(hlr({"--help"}).exit_code, 0);
+  EXPECT_EQ(hlr({"draw", "--help"}).exit_code, 0);
 }
 
 class CliCheck : public CliDraw {};

@@ -1,12 +1,19 @@
 #!/usr/bin/python3
-"""Checks hlr drawings with tools outside the project: check_drawing.py FILE...
+"""Checks hlr drawings with tools outside the project: check_drawing.py [--parts A,B,...] FILE...
 
   .dxf   read by ezdxf (recover.readfile, then a strict readfile) and audited: any audit error fails
          (ezdxf's own repairs, "fixes", are listed but pass); layers VISIBLE and HIDDEN must exist
-         and HIDDEN's linetype must be a dashed pattern defined in the file.
-  .svg   parsed with xml.etree (root <svg>, size in mm) and rendered with rsvg-convert to a
-         temporary PNG: a non-zero exit or an empty PNG fails.
+         (or, for a scene of several meshes, NAME-VISIBLE and NAME-HIDDEN for each part and no
+         VISIBLE/HIDDEN), every hidden layer's linetype a dashed pattern defined in the file, and
+         every entity on one of those layers.
+  .svg   parsed with xml.etree (root <svg>, size in mm, every path of the visible and hidden groups
+         inside a part group <g id="part-NAME-visible|hidden" class="part-NAME">, ids unique) and
+         rendered with rsvg-convert to a temporary PNG: a non-zero exit or an empty PNG fails.
   .json  the keys and types of hlr-lines/1 (DESIGN.md "The JSON contract").
+
+--parts A,B,...  the drawings are of a scene of these parts (names as docs/FORMATS.md makes them
+                 from the mesh files): the DXF must have exactly their layer pairs (upper case), the
+                 SVG's part groups must name only them and name each at least once.
 
 One line per file, "ok" or "FAIL" first; exit status 0 only when every file passes.
 Run it with Debian's interpreter, /usr/bin/python3: python3-ezdxf belongs to it.
@@ -47,18 +54,61 @@ def check_dxf(path):
         ezdxf.readfile(path)  # the strict reader must take it too
     except Exception as e:
         raise CheckFailed(f"ezdxf.readfile fails: {e}")
-    for name in ("VISIBLE", "HIDDEN"):
+    if PARTS:
+        pairs = [(f"{p.upper()}-VISIBLE", f"{p.upper()}-HIDDEN") for p in PARTS]
+        for name in ("VISIBLE", "HIDDEN"):
+            require(not doc.layers.has_entry(name), f"layer {name} in a drawing of several parts")
+    else:
+        pairs = [("VISIBLE", "HIDDEN")]
+    wanted = {name for pair in pairs for name in pair}
+    for name in sorted(wanted):
         require(doc.layers.has_entry(name), f"layer {name} missing")
-    ltype = doc.layers.get("HIDDEN").dxf.linetype
-    require(doc.linetypes.has_entry(ltype), f"linetype {ltype} of layer HIDDEN is not defined in the file")
-    pattern = doc.linetypes.get(ltype).simplified_line_pattern()
-    require(len(pattern) >= 2 and any(x > 0 for x in pattern[1::2]),
-            f"linetype {ltype} of layer HIDDEN is not dashed (pattern {pattern})")
+    # ezdxf adds "Defpoints" as it loads a file
+    extra = {layer.dxf.name for layer in doc.layers if layer.dxf.name.lower() != "defpoints"} - wanted - {"0"}
+    require(not extra, f"unexpected layers {sorted(extra)}")
+    pattern = None
+    for _, hidden in pairs:
+        ltype = doc.layers.get(hidden).dxf.linetype
+        require(doc.linetypes.has_entry(ltype), f"linetype {ltype} of layer {hidden} is not defined in the file")
+        pattern = doc.linetypes.get(ltype).simplified_line_pattern()
+        require(len(pattern) >= 2 and any(x > 0 for x in pattern[1::2]),
+                f"linetype {ltype} of layer {hidden} is not dashed (pattern {pattern})")
     msp = doc.modelspace()
-    counts = {layer: len(msp.query(f'*[layer=="{layer}"]')) for layer in ("VISIBLE", "HIDDEN")}
+    counts = {layer: len(msp.query(f'*[layer=="{layer}"]')) for layer in sorted(wanted)}
+    require(sum(counts.values()) == len(msp), "entities on layers other than the drawing's")
     fixes = len(auditor.fixes) + len(audit.fixes)
+    if PARTS:
+        per_layer = ", ".join(f"{layer} {n}" for layer, n in counts.items())
+        return f"entities: {per_layer}; hidden dashed {pattern}, ezdxf audit: 0 errors, {fixes} fixes"
     return (f"{counts['VISIBLE']} visible, {counts['HIDDEN']} hidden entities, HIDDEN dashed {pattern}, "
             f"$LTSCALE {doc.header.get('$LTSCALE', 1)}, ezdxf audit: 0 errors, {fixes} fixes")
+
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def check_svg_parts(root):
+    """The part groups of the visible and hidden groups; returns {part: [paths visible, hidden]}."""
+    ids = [e.get("id") for e in root.iter() if e.get("id") is not None]
+    require(len(ids) == len(set(ids)), "repeated ids: " + ", ".join(sorted({i for i in ids if ids.count(i) > 1})))
+    parts = {}
+    for cls in ("visible", "hidden"):
+        outer = [g for g in root.iter(SVG + "g") if g.get("id") == cls]
+        if not outer:
+            continue
+        for child in outer[0]:
+            require(child.tag == SVG + "g", f"a {child.tag} directly in group {cls}, not in a part group")
+            gid, klass = child.get("id", ""), child.get("class", "")
+            require(gid.startswith("part-") and gid.endswith("-" + cls), f"group {gid!r} in {cls} is not a part group")
+            name = gid[len("part-"):-len(cls) - 1]
+            require(klass == "part-" + name, f"group {gid} has class {klass!r}, not part-{name}")
+            paths = [e for e in child if e.tag == SVG + "path"]
+            require(paths and len(paths) == len(child), f"group {gid} is empty or holds more than paths")
+            parts.setdefault(name, [0, 0])[0 if cls == "visible" else 1] += len(paths)
+    if PARTS:
+        require(set(parts) <= set(PARTS), f"part groups {sorted(set(parts) - set(PARTS))} are not parts of the scene")
+        require(set(parts) == set(PARTS), f"no group for parts {sorted(set(PARTS) - set(parts))}")
+    return parts
 
 
 def check_svg(path):
@@ -81,7 +131,10 @@ def check_svg(path):
             require(f.read(8) == b"\x89PNG\r\n\x1a\n", "rsvg-convert output is not a PNG")
         size = os.path.getsize(png)
     paths = sum(1 for e in root.iter("{http://www.w3.org/2000/svg}path"))
-    return f"{root.get('width')} x {root.get('height')}, {paths} paths, rendered ({size} bytes PNG)"
+    parts = check_svg_parts(root)
+    summary = ", ".join(f"{name} {v}+{h}" for name, (v, h) in parts.items())
+    return (f"{root.get('width')} x {root.get('height')}, {paths} paths, parts (visible+hidden paths): "
+            f"{summary or 'none'}, rendered ({size} bytes PNG)")
 
 
 def is_number(x):
@@ -147,9 +200,14 @@ def check_json(path):
 
 
 CHECKS = {".dxf": check_dxf, ".svg": check_svg, ".json": check_json}
+PARTS = []  # --parts
 
 
 def main(argv):
+    global PARTS
+    if len(argv) >= 3 and argv[1] == "--parts":
+        PARTS = [p for p in argv[2].split(",") if p]
+        argv = argv[:1] + argv[3:]
     if len(argv) < 2:
         print(__doc__.strip().splitlines()[0], file=sys.stderr)
         return 2

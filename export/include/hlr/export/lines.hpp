@@ -5,9 +5,14 @@
 //   lines_json    the hlr-lines/1 contract (DESIGN.md, docs/FORMATS.md): every piece, visible and
 //                 hidden, with its kind and mesh edge.
 //   lines_svg     a drawing on a sheet, in millimetres: visible lines continuous wide, hidden lines
-//                 dashed narrow (ISO 128, docs/FORMATS.md), ISO 128 precedence applied.
+//                 dashed narrow (ISO 128, docs/FORMATS.md), each part's lines in a group of its own.
 //   lines_dxf     the same drawing as DXF R2000 in model units (millimetres), layers VISIBLE and
-//                 HIDDEN, a dashed linetype defined in the file, polylines as LWPOLYLINE.
+//                 HIDDEN (one pair per part when the scene has several meshes), a dashed linetype
+//                 defined in the file, polylines as LWPOLYLINE.
+//
+// SVG and DXF draw the sheet segments (sheet_segments): the drawing segments after near-coincident
+// ones are merged at the drawing's resolution. That is a tolerance on rounded output, for the eye;
+// the JSON keeps every piece as the exact engine made it.
 //
 // Writers return the document; the caller writes it to disk (atomically).
 #pragma once
@@ -38,10 +43,11 @@ struct DrawingPiece {
   double t0 = 0, t1 = 1;   // its span along that line, rounded
 };
 
-// A segment the drawing shows, after precedence (in model units).
+// A segment the drawing shows, after precedence (in model units), and the mesh it is drawn for.
 struct DrawingSegment {
   Point2 a, b;
   bool visible = true;
+  std::uint32_t mesh = 0;
 };
 
 // Set when a drawing comes from the raster path (hidden_line/raster.hpp) instead of a kernel.
@@ -61,6 +67,10 @@ struct LineDrawing {
   double crease_degrees = 30;
   StageTimes times;
   double zbuffer_seconds = 0;  // raster path: building the Z-buffer
+  // Set by the caller from sheet_segments: how many segments the SVG and DXF merge, and at which
+  // distance on the sheet (JSON stats "merged_segments", "merge_distance_mm"); absent: not written.
+  std::optional<std::size_t> merged_segments;
+  double merge_distance_mm = 0;
   // Total image-plane length of `segments` (what a drawing shows), visible and hidden, model units.
   double visible_length() const { return length(true); }
   double hidden_length() const { return length(false); }
@@ -91,21 +101,49 @@ struct DrawingStyle {
   Sheet sheet;
   std::optional<double> scale;  // drawing mm per model unit; none: the largest ISO 5455 scale that fits
   bool hidden = true;           // draw hidden lines (dashed); false: visible lines only
+  double merge_distance = 0.01; // mm on the sheet: the drawing's resolution (0: merge nothing)
 };
 
 // The scale a drawing is made at: style.scale, or the largest ISO 5455 scale (1:1, 1:2, 1:5, ...,
 // 2:1, 5:1, ...) at which the drawing fits the sheet's drawing area.
 double drawing_scale(const LineDrawing& drawing, const DrawingStyle& style);
 
-// Drawing segments of one class joined end to end: segments whose endpoints are equal doubles are
-// joined through every point where exactly two segments of that class meet (the exact engine makes
-// shared endpoints identical, so no tolerance). Visible chains first, then hidden ones, each in
-// the order of their first segment in the input; a closed loop has `closed` set and does not
-// repeat its first point.
+// Near-coincident segments drawn once, after ISO 128 precedence. Visible segments are taken first,
+// then hidden ones, each class in input order; a segment loses every part that runs along an
+// already kept segment within `distance` (model units): whole duplicates are dropped, collinear
+// overlaps trimmed, and leftovers shorter than `distance` dropped; an overlap shorter than
+// `distance` is left alone (segments meeting end to end). "Along" means nearly parallel
+// (directions within about 0.6 degrees), so that lines crossing or meeting another one are never
+// cut. A trimmed end at a kept segment's end is moved onto that end, so chains stay joined. Kept
+// segments keep their input order; `merged` counts the segments dropped or shortened. A uniform
+// grid finds the candidates: no all-pairs scan.
+struct MergedSegments {
+  std::vector<DrawingSegment> segments;
+  std::size_t merged = 0;
+};
+MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, double distance);
+
+// What the SVG and DXF of `drawing` show with `style`: the drawn classes (hidden ones only if
+// style.hidden), merged at style.merge_distance mm on the sheet, that is merge_distance / scale in
+// model units at the drawing's scale.
+MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style);
+
+// The name of each part (mesh) of a drawing, from its input file's stem: letters, digits, '_' and
+// '-' kept, any other run of characters made one '_', "mesh" when nothing is left, and "-2", "-3",
+// ... added where a name (compared in any letter case, as DXF layer names are) is taken already.
+// One name per input file, and "mesh-N" for a mesh index beyond them.
+std::vector<std::string> part_names(const LineDrawing& drawing);
+
+// Drawing segments of one class and one mesh joined end to end: segments whose endpoints are equal
+// doubles are joined through every point where exactly two segments of that class and mesh meet
+// (the exact engine makes shared endpoints identical, so no tolerance). Visible chains first, then
+// hidden ones, each in the order of their first segment in the input; a closed loop has `closed`
+// set and does not repeat its first point.
 struct DrawingPolyline {
   std::vector<Point2> points;
   bool closed = false;
   bool visible = true;
+  std::uint32_t mesh = 0;
 };
 std::vector<DrawingPolyline> chain_segments(const std::vector<DrawingSegment>& segments);
 

@@ -13,7 +13,8 @@
 // exactly once, and consecutive pieces differ in visibility.
 //
 // drawing_segments applies ISO 128 precedence for drawings: where pieces coincide in the image,
-// the visible one is drawn and a hidden one is not; coincident pieces of one class are drawn once.
+// the visible one is drawn and a hidden one is not; coincident pieces of one class are drawn once,
+// for the mesh whose line comes first.
 #pragma once
 
 #include <hlr/hidden_line/visibility.hpp>
@@ -77,11 +78,14 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
                           const VisibilityMap<K>& map, const std::vector<IntersectionSegment>& intersections,
                           const LineOptions& options = {});
 
-// A segment of the drawing in the image plane (unnormalized view frame).
+// A segment of the drawing in the image plane (unnormalized view frame). `mesh` is the part it
+// is drawn for: its line's mesh (for an intersection line the lower of the two meshes); where
+// lines of several meshes coincide, the one that comes first in the LineSet is drawn.
 template <class K>
 struct DrawnSegment {
   typename Geometry<K>::Point a, b;
   bool visible = true;
+  std::uint32_t mesh = 0;
 };
 
 template <class K>

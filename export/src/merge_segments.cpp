@@ -1,0 +1,259 @@
+// Near-coincident drawing segments drawn once (hlr/export/lines.hpp, merge_segments), and the
+// names of a drawing's parts.
+//
+// Why a tolerance here and nowhere else: two parts whose edges are 1e-7 apart in the input (CAD
+// coordinates rounded to a few decimals) give two lines that the exact engine rightly keeps apart,
+// and a sheet would show a dashed line under a solid one, or two solid lines drawn twice, where a
+// drafter draws one. On the sheet, after the one rounding of the result, lines closer than the
+// drawing's resolution are one line, and ISO 128 precedence (visible over hidden) picks which.
+//
+// Each segment S is compared with the already kept segments K near it (a uniform grid over the
+// drawing, cells about one mean segment length wide, each segment listed in the cells its
+// distance-widened outline touches). Where S runs nearly parallel to K, the part of S that is
+// within `distance` of K's line and whose foot lies on K is covered; the covered parts are cut out
+// of S. Only nearly parallel pairs cover, so a line crossing another or ending on it is never cut.
+#include <hlr/export/lines.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <set>
+
+namespace hlr::exporter {
+namespace {
+
+// Directions closer than this (the sine of about 0.57 degrees) count as "along". Two lines at this
+// angle stay within a resolution of 0.01 mm over 2 mm of the sheet, which the 0.5 mm line width
+// covers; steeper meetings are crossings and T-junctions, which must stay whole.
+constexpr double max_sine = 0.01;
+
+double cross(const Point2& u, const Point2& v) { return u[0] * v[1] - u[1] * v[0]; }
+double dot(const Point2& u, const Point2& v) { return u[0] * v[0] + u[1] * v[1]; }
+Point2 minus(const Point2& a, const Point2& b) { return {a[0] - b[0], a[1] - b[1]}; }
+
+double distance_to_segment(const Point2& x, const Point2& a, const Point2& b) {
+  const Point2 ab = minus(b, a), ax = minus(x, a);
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0 ? std::clamp(dot(ax, ab) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(ax[0] - t * ab[0], ax[1] - t * ab[1]);
+}
+
+// Segment ids in a uniform grid of square cells; a segment is listed in every cell within
+// `widen` of it. A filter only: the cover test below decides.
+class SegmentGrid {
+ public:
+  SegmentGrid(const std::vector<DrawingSegment>& segments, double widen) : widen_(widen) {
+    double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL, total = 0;
+    std::size_t n = 0;
+    for (const auto& s : segments)
+      for (const Point2& p : {s.a, s.b}) {
+        x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+      }
+    for (const auto& s : segments) total += std::hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]), ++n;
+    if (!(x0 <= x1 && y0 <= y1)) x0 = y0 = 0, x1 = y1 = 1;
+    x0_ = x0 - widen, y0_ = y0 - widen;
+    const double w = x1 - x0 + 2 * widen, h = y1 - y0 + 2 * widen;
+    // About one mean segment length per cell, at most 2048 cells a side and about 4 cells a segment.
+    double cell = std::max({n ? total / double(n) : 1.0, 2 * widen, std::max(w, h) / 2048});
+    cell = std::max(cell, std::sqrt(w * h / (4.0 * double(n) + 16)));
+    if (!(cell > 0) || !std::isfinite(cell)) cell = std::max({w, h, 1.0});
+    cell_ = cell;
+    nx_ = std::clamp<long>(long(w / cell) + 1, 1, 4096);
+    ny_ = std::clamp<long>(long(h / cell) + 1, 1, 4096);
+    cells_.resize(std::size_t(nx_ * ny_));
+  }
+
+  void insert(std::uint32_t id, const DrawingSegment& s) {
+    for_cells(s, [&](std::vector<std::uint32_t>& cell) { cell.push_back(id); });
+    if (id >= stamp_.size()) stamp_.resize(id + 1, 0);
+  }
+
+  // Calls visit(id) once for every listed segment that shares a cell with `s`.
+  template <class Visit>
+  void query(const DrawingSegment& s, Visit&& visit) {
+    ++round_;
+    for_cells(s, [&](std::vector<std::uint32_t>& cell) {
+      for (std::uint32_t id : cell) {
+        if (stamp_[id] == round_) continue;
+        stamp_[id] = round_;
+        visit(id);
+      }
+    });
+  }
+
+ private:
+  template <class Each>
+  void for_cells(const DrawingSegment& s, Each&& each) {
+    auto index = [&](double v, double lo, long n) {
+      const double q = std::floor((v - lo) / cell_);
+      return q >= double(n - 1) ? n - 1 : q >= 0 ? long(q) : 0;  // NaN and below go to 0
+    };
+    const long cx0 = index(std::min(s.a[0], s.b[0]) - widen_, x0_, nx_);
+    const long cx1 = index(std::max(s.a[0], s.b[0]) + widen_, x0_, nx_);
+    const long cy0 = index(std::min(s.a[1], s.b[1]) - widen_, y0_, ny_);
+    const long cy1 = index(std::max(s.a[1], s.b[1]) + widen_, y0_, ny_);
+    const bool one_cell = cx0 == cx1 || cy0 == cy1;  // a row or column: every cell is near
+    const double reach = cell_ * M_SQRT1_2 + widen_ + cell_ * 1e-9;
+    for (long y = cy0; y <= cy1; ++y)
+      for (long x = cx0; x <= cx1; ++x) {
+        const Point2 centre{x0_ + (double(x) + 0.5) * cell_, y0_ + (double(y) + 0.5) * cell_};
+        if (one_cell || distance_to_segment(centre, s.a, s.b) <= reach) each(cells_[std::size_t(y * nx_ + x)]);
+      }
+  }
+
+  double widen_, x0_ = 0, y0_ = 0, cell_ = 1;
+  long nx_ = 1, ny_ = 1;
+  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t round_ = 0;
+};
+
+// A covered stretch [lo, hi] of S (arc length from S's start); an end that lies at an end of the
+// covering segment carries that end, which the cut piece ends on.
+struct Cover {
+  double lo, hi;
+  std::optional<Point2> at_lo, at_hi;
+};
+
+// The part of s = (a, b) that runs along k within `distance`, if any.
+std::optional<Cover> cover_of(const DrawingSegment& s, const DrawingSegment& k, double distance) {
+  const Point2 ab = minus(s.b, s.a), pq = minus(k.b, k.a);
+  const double len = std::hypot(ab[0], ab[1]), len_k = std::hypot(pq[0], pq[1]);
+  if (!(len > 0) || !(len_k > 0)) return std::nullopt;
+  const Point2 u{ab[0] / len, ab[1] / len}, v{pq[0] / len_k, pq[1] / len_k};
+  if (std::abs(cross(u, v)) > max_sine) return std::nullopt;
+  // Foot on k: w(s) = w0 + s cos in [0, len_k]; |cos| is nearly 1 here.
+  const Point2 pa = minus(s.a, k.a);
+  const double cos = dot(u, v), w0 = dot(pa, v);
+  double lo = -w0 / cos, hi = (len_k - w0) / cos;
+  std::optional<Point2> at_lo = k.a, at_hi = k.b;
+  if (lo > hi) std::swap(lo, hi), std::swap(at_lo, at_hi);
+  // Distance from k's line: h(s) = h0 + s sin, |h| <= distance.
+  const double sin = cross(v, u), h0 = cross(v, pa);
+  if (sin == 0) {
+    if (std::abs(h0) > distance) return std::nullopt;
+  } else {
+    double h_lo = (-distance - h0) / sin, h_hi = (distance - h0) / sin;
+    if (h_lo > h_hi) std::swap(h_lo, h_hi);
+    if (h_lo > lo) lo = h_lo, at_lo.reset();
+    if (h_hi < hi) hi = h_hi, at_hi.reset();
+  }
+  if (lo < 0) lo = 0, at_lo.reset();
+  if (hi > len) hi = len, at_hi.reset();
+  if (!(lo < hi)) return std::nullopt;
+  return Cover{lo, hi, at_lo, at_hi};
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, double distance) {
+  MergedSegments out;
+  if (!(distance > 0) || !std::isfinite(distance)) {
+    out.segments = segments;
+    return out;
+  }
+  // Precedence: visible before hidden, input order within a class.
+  std::vector<std::uint32_t> order;
+  for (bool visible : {true, false})
+    for (std::uint32_t i = 0; i < segments.size(); ++i)
+      if (segments[i].visible == visible) order.push_back(i);
+
+  SegmentGrid grid(segments, distance);
+  std::vector<DrawingSegment> kept;
+  std::vector<std::vector<std::uint32_t>> pieces_of(segments.size());  // indices into `kept`
+  std::vector<Cover> covers;
+  for (const std::uint32_t i : order) {
+    const DrawingSegment& s = segments[i];
+    covers.clear();
+    grid.query(s, [&](std::uint32_t k) {
+      if (auto c = cover_of(s, kept[k], distance)) covers.push_back(*c);
+    });
+    auto keep = [&](const DrawingSegment& piece) {
+      grid.insert(std::uint32_t(kept.size()), piece);
+      pieces_of[i].push_back(std::uint32_t(kept.size()));
+      kept.push_back(piece);
+    };
+    // Covers joined into runs where the gap between them is below the distance (such a gap is a
+    // sliver of the same line). A run shorter than the distance is no overlap but two lines
+    // meeting end to end (the neighbours along a tessellated curve), unless it is all of s.
+    const double len = std::hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]);
+    std::sort(covers.begin(), covers.end(), [](const Cover& x, const Cover& y) {
+      return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi;
+    });
+    std::vector<Cover> runs;
+    for (const Cover& c : covers) {
+      if (!runs.empty() && c.lo <= runs.back().hi + distance) {
+        if (c.hi > runs.back().hi) runs.back().hi = c.hi, runs.back().at_hi = c.at_hi;
+      } else {
+        runs.push_back(c);
+      }
+    }
+    std::erase_if(runs, [&](const Cover& r) { return r.hi - r.lo < distance && !(r.lo <= 0 && r.hi >= len); });
+    if (runs.empty()) {
+      keep(s);
+      continue;
+    }
+    ++out.merged;
+    auto at = [&](double t) -> Point2 {
+      return {s.a[0] + (s.b[0] - s.a[0]) * (t / len), s.a[1] + (s.b[1] - s.a[1]) * (t / len)};
+    };
+    double from = 0;
+    Point2 from_point = s.a;
+    // Uncovered leftovers at the ends shorter than the distance are slivers: dropped.
+    auto piece = [&](double t1, const Point2& end) {
+      if (t1 - from >= distance) keep(DrawingSegment{from_point, end, s.visible, s.mesh});
+    };
+    for (const Cover& r : runs) {
+      if (r.lo > from) piece(r.lo, r.at_lo.value_or(at(r.lo)));
+      from = r.hi;
+      from_point = r.hi >= len ? s.b : r.at_hi.value_or(at(r.hi));
+    }
+    if (from < len) piece(len, s.b);
+  }
+  for (const auto& list : pieces_of)
+    for (std::uint32_t k : list) out.segments.push_back(kept[k]);
+  return out;
+}
+
+MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style) {
+  std::vector<DrawingSegment> drawn;
+  for (const auto& s : drawing.segments)
+    if (s.visible || style.hidden) drawn.push_back(s);
+  const double scale = drawing_scale(drawing, style);
+  return merge_segments(drawn, style.merge_distance / scale);
+}
+
+std::vector<std::string> part_names(const LineDrawing& drawing) {
+  std::uint32_t parts = std::uint32_t(drawing.input.files.size());
+  for (const auto& s : drawing.segments) parts = std::max(parts, s.mesh + 1);
+  std::vector<std::string> names;
+  std::set<std::string> taken;  // lower case
+  for (std::uint32_t m = 0; m < parts; ++m) {
+    std::string name;
+    if (m < drawing.input.files.size()) {
+      std::string stem = drawing.input.files[m];
+      if (const auto slash = stem.find_last_of("/\\"); slash != std::string::npos) stem = stem.substr(slash + 1);
+      if (const auto dot = stem.find_last_of('.'); dot != std::string::npos && dot > 0) stem = stem.substr(0, dot);
+      for (char c : stem) {
+        const bool ok = std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 128;
+        if (ok || c == '_' || c == '-') name += c;
+        else if (name.empty() || name.back() != '_') name += '_';
+      }
+      if (name.empty()) name = "mesh";
+    } else {
+      name = "mesh-" + std::to_string(m);
+    }
+    std::string unique = name;
+    for (int k = 2; taken.count(lower(unique)); ++k) unique = name + "-" + std::to_string(k);
+    taken.insert(lower(unique));
+    names.push_back(unique);
+  }
+  return names;
+}
+
+}  // namespace hlr::exporter

@@ -1,5 +1,5 @@
 // `hlr draw MESH... --view V -o OUT.svg|OUT.dxf|OUT.json|OUT.png [--hidden dashed|none] [--crease DEG]
-//            [--sheet A4] [--scale 1:2] [--merge-distance MM]
+//            [--sheet A4] [--scale 1:2] [--merge-distance MM] [--contact-angle DEG]
 //            [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
@@ -26,6 +26,7 @@ struct DrawOptions {
   int raster = 0;  // pixels; 0: the exact path (or --kernel)
   std::string dash = "arc";
   double merge_distance = 0.01;  // mm on the sheet
+  double contact_degrees = 10;
 };
 
 enum class Format { json, svg, dxf, png };
@@ -87,9 +88,12 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   drawing.times.read = read;
   drawing.times.total += read;
   // What the SVG and DXF merge, for the JSON's stats and the summary (they merge the same).
-  const std::size_t merged = exporter::sheet_segments(drawing, style).merged;
+  const exporter::MergedSegments sheet = exporter::sheet_segments(drawing, style);
+  const std::size_t merged = sheet.merged;
   drawing.merged_segments = merged;
   drawing.merge_distance_mm = style.merge_distance;
+  drawing.contact_segments = sheet.contact;
+  drawing.contact_degrees = style.contact_degrees;
   if (settings.progress)
     std::cerr << "hlr: " << merged << " near-coincident drawing segments merged (within " << style.merge_distance
               << " mm on the sheet)\n";
@@ -120,6 +124,9 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   if (merged > 0)
     std::cout << "  " << merged << " segments merged in the SVG and DXF (lines within " << style.merge_distance
               << " mm of a line drawn already)\n";
+  if (sheet.contact > 0)
+    std::cout << "  " << sheet.contact << " intersection segments left out of the SVG and DXF (surfaces meeting at under "
+              << style.contact_degrees << " degrees: contact of nearly tangent surfaces)\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
   return kExitOk;
 }
@@ -144,6 +151,7 @@ int run(const DrawOptions& options) {
   }
   style.hidden = options.hidden == "dashed";
   style.merge_distance = options.merge_distance;
+  style.contact_degrees = options.contact_degrees;
   if (options.raster > 0 && options.scene.kernel != "exact") {
     std::cerr << "hlr: --raster and --kernel " << options.scene.kernel
               << " exclude each other (the raster path decides visibility by depth tests, not by a kernel)"
@@ -182,6 +190,12 @@ Subcommand add_draw_command(CLI::App& parent) {
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str()
       ->type_name("MM");
+  cmd->add_option("--contact-angle", options->contact_degrees,
+                  "in SVG and DXF, leave out intersection lines where surfaces meet at less than DEG degrees (the "
+                  "contact of nearly tangent surfaces, such as a shaft in a bore; 0: draw all; the JSON keeps them)")
+      ->check(CLI::Range(0.0, 90.0))
+      ->capture_default_str()
+      ->type_name("DEG");
   cmd->add_option("--raster", options->raster,
                   "decide visibility in image space instead (the P-buffer path, inexact): a Z-buffer N pixels "
                   "along the longer side; needed for .png output")

@@ -13,7 +13,7 @@ LineDrawing make_raster_drawing(const InputInfo& input, const hidden_line::Raste
   for (const auto& line : lines.lines)
     for (const auto& piece : line.pieces) {
       auto at = [&](double t) { return DoublePoint{line.a.x + t * (line.b.x - line.a.x), line.a.y + t * (line.b.y - line.a.y)}; };
-      segments.push_back({at(piece.t0), at(piece.t1), piece.visible, line.mesh});
+      segments.push_back({at(piece.t0), at(piece.t1), piece.visible, line.mesh, line.meeting_degrees});
     }
   LineDrawing drawing = make_drawing<DoubleKernel>(input, raster.frame(), KernelKind::floating, lines, segments);
   const hidden_line::RasterGrid& grid = raster.grid();

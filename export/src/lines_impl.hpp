@@ -42,7 +42,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   for (const auto& s : segments)
     d.segments.push_back({{frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)},
                           {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)},
-                          s.visible, s.mesh});
+                          s.visible, s.mesh, s.meeting_degrees});
   return d;
 }
 

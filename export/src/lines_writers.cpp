@@ -392,6 +392,8 @@ std::string lines_json(const LineDrawing& drawing) {
   if (drawing.merged_segments) {
     out["stats"]["merged_segments"] = *drawing.merged_segments;
     out["stats"]["merge_distance_mm"] = drawing.merge_distance_mm;
+    out["stats"]["contact_segments"] = drawing.contact_segments;
+    out["stats"]["contact_degrees"] = drawing.contact_degrees;
   }
   return out.dump(1) + "\n";
 }

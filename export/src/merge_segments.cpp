@@ -206,7 +206,7 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     Point2 from_point = s.a;
     // Uncovered leftovers at the ends shorter than the distance are slivers: dropped.
     auto piece = [&](double t1, const Point2& end) {
-      if (t1 - from >= distance) keep(DrawingSegment{from_point, end, s.visible, s.mesh});
+      if (t1 - from >= distance) keep(DrawingSegment{from_point, end, s.visible, s.mesh, s.meeting_degrees});
     };
     for (const Cover& r : runs) {
       if (r.lo > from) piece(r.lo, r.at_lo.value_or(at(r.lo)));
@@ -222,10 +222,16 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
 
 MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style) {
   std::vector<DrawingSegment> drawn;
-  for (const auto& s : drawing.segments)
-    if (s.visible || style.hidden) drawn.push_back(s);
+  std::size_t contact = 0;
+  for (const auto& s : drawing.segments) {
+    if (!s.visible && !style.hidden) continue;
+    if (s.meeting_degrees < style.contact_degrees) ++contact;
+    else drawn.push_back(s);
+  }
   const double scale = drawing_scale(drawing, style);
-  return merge_segments(drawn, style.merge_distance / scale);
+  MergedSegments out = merge_segments(drawn, style.merge_distance / scale);
+  out.contact = contact;
+  return out;
 }
 
 std::vector<std::string> part_names(const LineDrawing& drawing) {

@@ -16,6 +16,8 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
 
+#include <cmath>
+#include <numbers>
 #include <map>
 #include <tuple>
 
@@ -114,6 +116,17 @@ bool crosses_at_shared_corner(const Vec3& v, const Vec3& f1, const Vec3& f2, con
 
 }  // namespace
 
+namespace {
+// The angle between two planes with these normals, in degrees in [0, 90], in double (output only).
+double angle_between(const EK::Vector_3& n, const EK::Vector_3& m) {
+  const double a[3] = {CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())};
+  const double b[3] = {CGAL::to_double(m.x()), CGAL::to_double(m.y()), CGAL::to_double(m.z())};
+  const double cross = std::hypot(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
+  const double dot = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+  return std::atan2(cross, dot) * 180 / std::numbers::pi;
+}
+}  // namespace
+
 std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes) {
   std::vector<detail::MeshTopology> topo;
   for (const Mesh& m : meshes) topo.push_back(detail::analyse_mesh(m));
@@ -180,6 +193,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   struct Piece {
     EK::Point_3 a, b;  // a < b lexicographically
     std::uint32_t face_a, face_b;
+    double meeting_degrees;
   };
   std::map<GroupPair, std::vector<Piece>> pieces;
   auto plane_of = [&](const FaceRef& r) {
@@ -198,6 +212,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     const EK::Line_3* line = boost::get<EK::Line_3>(&*meet);  // CGAL 5: boost::variant
     if (!line) continue;
     const EK::Point_3 p = line->point();
+    const double meeting_degrees = angle_between(pf.orthogonal_vector(), pg.orthogonal_vector());
     const EK::Vector_3 d = line->to_vector();
     const auto in_f = interior_intervals(meshes[f.mesh], meshes[f.mesh].faces[f.face], pf.orthogonal_vector(), p, d);
     const auto in_g = interior_intervals(meshes[g.mesh], meshes[g.mesh].faces[g.face], pg.orthogonal_vector(), p, d);
@@ -208,7 +223,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
         if (!(lo < hi)) continue;
         EK::Point_3 a = p + lo * d, b = p + hi * d;
         if (CGAL::compare_xyz(b, a) == CGAL::SMALLER) std::swap(a, b);
-        pieces[key].push_back({a, b, f.face, g.face});
+        pieces[key].push_back({a, b, f.face, g.face, meeting_degrees});
       }
   }
 
@@ -219,7 +234,8 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     std::sort(list.begin(), list.end(),
               [](const Piece& x, const Piece& y) { return CGAL::compare_xyz(x.a, y.a) == CGAL::SMALLER; });
     for (std::size_t k = 0; k < list.size();) {
-      IntersectionSegment s{list[k].a, list[k].b, std::get<0>(key), std::get<2>(key), {list[k].face_a}, {list[k].face_b}};
+      IntersectionSegment s{list[k].a,          list[k].b,          std::get<0>(key), std::get<2>(key),
+                            {list[k].face_a}, {list[k].face_b}, list[k].meeting_degrees};
       for (++k; k < list.size() && CGAL::compare_xyz(list[k].a, s.b) != CGAL::LARGER; ++k) {
         if (CGAL::compare_xyz(list[k].b, s.b) == CGAL::LARGER) s.b = list[k].b;
         s.faces_a.push_back(list[k].face_a);

@@ -333,6 +333,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
       line.b = to_view(s.b);
       line.kind = FeatureKind::intersection;
       line.mesh = s.mesh_a;
+      line.meeting_degrees = s.meeting_degrees;
       own.clear();
       add_own(s.mesh_a, s.faces_a);
       add_own(s.mesh_b, s.faces_b);
@@ -353,6 +354,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
     FT t0, t1;
     bool visible;
     std::uint32_t mesh;
+    double meeting_degrees;
   };
   std::vector<Span> spans;
   CGAL::Bbox_2 domain;
@@ -362,7 +364,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
       const detail::ImageLine<K> image(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y));
       domain += image.bbox();
       for (const auto& p : l.pieces)
-        if (p.visible == visible) spans.push_back({image, p.t0, p.t1, visible, l.mesh});
+        if (p.visible == visible) spans.push_back({image, p.t0, p.t1, visible, l.mesh, l.meeting_degrees});
     }
 
   // Visible spans first, then hidden ones; each loses what earlier, collinear spans already draw.
@@ -384,7 +386,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
     std::sort(covered.begin(), covered.end());
     FT from = span.t0;
     auto emit = [&](const FT& t0, const FT& t1) {
-      const DrawnSegment<K> d{span.line.at(t0), span.line.at(t1), span.visible, span.mesh};
+      const DrawnSegment<K> d{span.line.at(t0), span.line.at(t1), span.visible, span.mesh, span.meeting_degrees};
       grid.insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
       out.push_back(d);
     };

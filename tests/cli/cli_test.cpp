@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -923,6 +924,44 @@ TEST_F(CliDraw, NearlyCoincidentEdgesOfTwoPartsAreDrawnOnceInTheirPartGroups) {
   EXPECT_FALSE(unmerged.find("g", "part-front_box-hidden"));
 }
 
+// A closed prism along z over the regular n-gon of radius r (an OFF file's text).
+std::string cylinder_off(int n, double r, double z0, double z1) {
+  std::ostringstream off;
+  off.precision(17);
+  off << "OFF\n" << 2 * n << ' ' << n + 2 << " 0\n";
+  for (double z : {z0, z1})
+    for (int i = 0; i < n; ++i) off << r * std::cos(2 * M_PI * i / n) << ' ' << r * std::sin(2 * M_PI * i / n) << ' ' << z << '\n';
+  off << n;
+  for (int i = n - 1; i >= 0; --i) off << ' ' << i;
+  off << '\n' << n;
+  for (int i = 0; i < n; ++i) off << ' ' << n + i;
+  off << '\n';
+  for (int i = 0; i < n; ++i) off << "4 " << i << ' ' << (i + 1) % n << ' ' << n + (i + 1) % n << ' ' << n + i << '\n';
+  return off.str();
+}
+
+TEST_F(CliDraw, ContactLinesOfNearlyTangentSurfacesAreLeftOffTheSheet) {
+  // A shaft (64 sides) in a bore of the same radius tessellated with 72 sides: their facets cut
+  // each other all along the contact, at a few degrees. The JSON has those intersection lines; the
+  // sheet leaves them out unless --contact-angle 0.
+  const std::string shaft = write_input("shaft.off", cylinder_off(64, 10, -5, 25)).string();
+  const std::string bore = write_input("bore.off", cylinder_off(72, 10, 0, 20)).string();
+  Outcome run = hlr({"draw", shaft, bore, "--view", "front", "-o", out("s.svg").string(), "-o", out("s.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("intersection segments left out of the SVG and DXF"), std::string::npos) << run.out;
+  const json doc = json::parse(slurp(out("s.json")));
+  EXPECT_GT(doc.at("stats").at("lines_by_kind").at("intersection").get<int>(), 50);
+  EXPECT_GT(doc.at("stats").at("contact_segments").get<int>(), 50);
+  EXPECT_EQ(doc.at("stats").at("contact_degrees"), 10);
+  run = hlr({"draw", shaft, bore, "--view", "front", "--contact-angle", "0", "-o", out("s0.svg").string(), "-o",
+             out("s0.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(json::parse(slurp(out("s0.json"))).at("stats").at("contact_segments"), 0);
+  const auto with = hlr::test::parse_svg(slurp(out("s0.svg"))), without = hlr::test::parse_svg(slurp(out("s.svg")));
+  EXPECT_GT(with.in_group("path", "visible").size() + with.in_group("path", "hidden").size(),
+            without.in_group("path", "visible").size() + without.in_group("path", "hidden").size() + 50);
+}
+
 TEST_F(CliDraw, EntirelyHiddenPartIsStillDrawnDashed) {
   // A small cube behind the box, entirely hidden by it: all of its lines are dashed, in its hidden
   // group.
@@ -944,6 +983,7 @@ TEST_F(CliDraw, EntirelyHiddenPartIsStillDrawnDashed) {
 TEST_F(CliDraw, BadMergeDistanceIsAUsageError) {
   const std::string cube = (kScenes / "cube.off").string();
   for (const char* bad : {"-0.01", "2", "fine"}) expect_failure({cube, "--merge-distance", bad, "-o", out("c.svg").string()}, 2, "hlr: ");
+  for (const char* bad : {"-1", "91", "steep"}) expect_failure({cube, "--contact-angle", bad, "-o", out("c.svg").string()}, 2, "hlr: ");
 }
 
 TEST_F(CliDraw, UnknownSubcommandIsNamed) {

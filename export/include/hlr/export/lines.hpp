@@ -48,6 +48,7 @@ struct DrawingSegment {
   Point2 a, b;
   bool visible = true;
   std::uint32_t mesh = 0;
+  double meeting_degrees = 90;  // intersection lines: the angle at which their surfaces meet
 };
 
 // Set when a drawing comes from the raster path (hidden_line/raster.hpp) instead of a kernel.
@@ -71,6 +72,10 @@ struct LineDrawing {
   // distance on the sheet (JSON stats "merged_segments", "merge_distance_mm"); absent: not written.
   std::optional<std::size_t> merged_segments;
   double merge_distance_mm = 0;
+  // Likewise, the intersection segments left out as contact lines ("contact_segments",
+  // "contact_degrees").
+  std::size_t contact_segments = 0;
+  double contact_degrees = 0;
   // Total image-plane length of `segments` (what a drawing shows), visible and hidden, model units.
   double visible_length() const { return length(true); }
   double hidden_length() const { return length(false); }
@@ -102,6 +107,9 @@ struct DrawingStyle {
   std::optional<double> scale;  // drawing mm per model unit; none: the largest ISO 5455 scale that fits
   bool hidden = true;           // draw hidden lines (dashed); false: visible lines only
   double merge_distance = 0.01; // mm on the sheet: the drawing's resolution (0: merge nothing)
+  // Intersection lines where two surfaces meet at less than this many degrees are contact lines of
+  // nearly tangent surfaces (a shaft in a bore, tessellated differently): not drawn (0: all drawn).
+  double contact_degrees = 10;
 };
 
 // The scale a drawing is made at: style.scale, or the largest ISO 5455 scale (1:1, 1:2, 1:5, ...,
@@ -120,11 +128,12 @@ double drawing_scale(const LineDrawing& drawing, const DrawingStyle& style);
 struct MergedSegments {
   std::vector<DrawingSegment> segments;
   std::size_t merged = 0;
+  std::size_t contact = 0;  // sheet_segments: intersection segments left out as contact lines
 };
 MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, double distance);
 
 // What the SVG and DXF of `drawing` show with `style`: the drawn classes (hidden ones only if
-// style.hidden), merged at style.merge_distance mm on the sheet, that is merge_distance / scale in
+// style.hidden) without the contact lines (style.contact_degrees), merged at style.merge_distance mm on the sheet, that is merge_distance / scale in
 // model units at the drawing's scale.
 MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style);
 

@@ -33,6 +33,9 @@ struct IntersectionSegment {
   Point3 a, b;
   std::uint32_t mesh_a = 0, mesh_b = 0;
   std::vector<std::uint32_t> faces_a, faces_b;  // the faces of each side the segment crosses
+  // The angle between the two planes in degrees, in (0, 90], rounded: not a decision of the exact
+  // path, but what drawings use to leave out the contact lines of nearly tangent surfaces.
+  double meeting_degrees = 90;
 };
 
 std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes);
@@ -51,6 +54,7 @@ struct FeatureLine {
   std::uint32_t mesh = 0;
   std::uint32_t v0 = 0, v1 = 0;  // the mesh edge's input vertices; unused for intersections
   std::vector<LinePiece<K>> pieces;  // empty when the line projects to a point
+  double meeting_degrees = 90;       // intersections: IntersectionSegment::meeting_degrees
 };
 
 struct LineStats {
@@ -86,6 +90,7 @@ struct DrawnSegment {
   typename Geometry<K>::Point a, b;
   bool visible = true;
   std::uint32_t mesh = 0;
+  double meeting_degrees = 90;  // of its line
 };
 
 template <class K>

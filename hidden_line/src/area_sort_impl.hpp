@@ -8,6 +8,8 @@
 
 #include <hlr/hidden_line/visibility.hpp>
 
+#include "box_index.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -58,6 +60,30 @@ class AreaSort {
     return box;
   }
 
+  // Whether the line through an edge of one outer contour has that contour on its closed left
+  // side and the other outer contour on its closed right side: then the polygons' interiors are
+  // disjoint, and clipping one by the other would cut nothing. Mesh neighbours, whose boxes always
+  // overlap, are told apart this way with a few filtered orientation tests. Exact; a false "no"
+  // only costs a clip. Long contours are left to the clipper.
+  static bool separated(const clip::Contour<K>& a, const clip::Contour<K>& b) {
+    constexpr std::size_t kMaxCorners = 16;
+    if (a.size() > kMaxCorners || b.size() > kMaxCorners) return false;
+    auto separates = [](const clip::Contour<K>& own, const clip::Contour<K>& other) {
+      const std::size_t n = own.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const P &p = own.points[i], &q = own.points[(i + 1) % n];
+        auto all_on = [&](const clip::Contour<K>& c, int side) {
+          for (const P& r : c.points)
+            if (G::orientation(p, q, r) == -side) return false;
+          return true;
+        };
+        if (all_on(own, 1) && all_on(other, -1)) return true;
+      }
+      return false;
+    };
+    return separates(a, b) || separates(b, a);
+  }
+
   // Nearer first; ties by source index, so the order is deterministic.
   bool nearer(const Item& x, const Item& y) const {
     const double zx = nearest_[x.source], zy = nearest_[y.source];
@@ -72,7 +98,7 @@ class AreaSort {
     bool nearer_somewhere = false, farther_somewhere = false;
     // The depth difference is linear: its extremes are at corners of the outer contour.
     for (const P& p : piece.outer.points) {
-      const int sign = G::sign(da * G::x(p) + db * G::y(p) + dc);
+      const int sign = G::sign_above(da, db, dc, G::x(p), G::y(p), FT(0));
       nearer_somewhere |= sign > 0;
       farther_somewhere |= sign < 0;
     }
@@ -174,68 +200,89 @@ class AreaSort {
   // Solves visibility within `list`: the pieces of one region, which nothing outside the list
   // covers. Along a chain of recursive calls every front lies strictly nearer than the one before
   // it at every point of the inner call's region, so no source appears twice on the chain.
+  //
+  // Items are taken nearest first (by rough depth); the pieces a front cuts off an item stay in
+  // that item's place in the order (its slot). A loose grid of the live pieces' boxes gives each
+  // front the pieces it can cut, so no front scans the whole list.
   void resolve(std::vector<Item>& list) {
     if (++depth_ > src_.polygons.size() + 1) throw clip::ClipError("area sort recursion does not converge");
-    // Kept farthest first, so the front item is at the back of the vector.
-    std::stable_sort(list.begin(), list.end(), [&](const Item& x, const Item& y) { return nearer(y, x); });
+    std::stable_sort(list.begin(), list.end(), [&](const Item& x, const Item& y) { return nearer(x, y); });
 
-    std::vector<Item> rest;
+    CGAL::Bbox_2 domain;
+    for (const Item& item : list) domain += item.box;
+    detail::LooseGrid grid(domain, list.size());
+    std::vector<Item> pieces = std::move(list);
+    std::vector<std::uint32_t> slot_of(pieces.size());
+    std::vector<std::vector<std::uint32_t>> slots(pieces.size());
+    std::vector<char> live(pieces.size(), 1);
+    for (std::uint32_t i = 0; i < pieces.size(); ++i) {
+      slot_of[i] = i;
+      slots[i] = {i};
+      grid.insert(i, pieces[i].box);
+    }
+
+    std::vector<std::uint32_t> cut;
     std::vector<Polygon> subjects;
-    std::vector<std::size_t> subject_items;
-    while (!list.empty()) {
-      Item front = std::move(list.back());
-      list.pop_back();
-      // Only items whose boxes overlap the front piece can be cut by it.
-      subjects.clear();
-      subject_items.clear();
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        if (CGAL::do_overlap(list[i].box, front.box)) {
-          subject_items.push_back(i);
-          subjects.push_back(std::move(list[i].polygon));
-        }
-      }
-      std::vector<Item> ahead;
-      if (!subjects.empty()) {
-        ++map_.stats.clips;
-        clip::ClipRegion<K> region(front.polygon, src_.lines);
-        auto results = clip::clip_list<K>(subjects, region);
-        rest.clear();
-        std::size_t next = 0;
-        for (std::size_t i = 0; i < list.size(); ++i) {
-          if (next < subject_items.size() && subject_items[next] == i) {
-            auto& result = results[next++];
-            for (auto& piece : result.outside) {
-              CGAL::Bbox_2 box = box_of(piece);
-              rest.push_back({std::move(piece), list[i].source, box});
+    for (std::size_t slot = 0; slot < slots.size(); ++slot) {
+      while (!slots[slot].empty()) {
+        const std::uint32_t id = slots[slot].back();
+        slots[slot].pop_back();
+        live[id] = 0;
+        Item front = std::move(pieces[id]);
+        // Pieces of the front's own source never overlap it.
+        cut.clear();
+        grid.query(front.box, [&](std::uint32_t other) {
+          if (live[other] && pieces[other].source != front.source &&
+              !separated(front.polygon.outer, pieces[other].polygon.outer))
+            cut.push_back(other);
+        });
+        std::sort(cut.begin(), cut.end());
+        std::vector<Item> ahead;
+        if (!cut.empty()) {
+          ++map_.stats.clips;
+          subjects.clear();
+          for (std::uint32_t other : cut) subjects.push_back(std::move(pieces[other].polygon));
+          clip::ClipRegion<K> region(front.polygon, src_.lines);
+          auto results = clip::clip_list<K>(subjects, region);
+          for (std::size_t i = 0; i < cut.size(); ++i) {
+            const std::uint32_t other = cut[i], source = pieces[other].source, home = slot_of[other];
+            live[other] = 0;
+            auto& kept = slots[home];
+            kept.erase(std::find(kept.begin(), kept.end(), other));
+            for (auto& piece : results[i].outside) {
+              const auto pid = static_cast<std::uint32_t>(pieces.size());
+              const CGAL::Bbox_2 box = box_of(piece);
+              pieces.push_back({std::move(piece), source, box});
+              slot_of.push_back(home);
+              live.push_back(1);
+              kept.push_back(pid);
+              grid.insert(pid, box);
             }
-            for (auto& piece : result.inside) place(std::move(piece), list[i].source, front.source, ahead);
-          } else {
-            rest.push_back(std::move(list[i]));
+            for (auto& piece : results[i].inside) place(std::move(piece), source, front.source, ahead);
           }
         }
-        list.swap(rest);
-      }
-      if (ahead.empty()) {
-        map_.visible.push_back({std::move(front.polygon), front.source, -1});
-        continue;
-      }
-      // The rough order was wrong here: what lies ahead hides that much of the front piece, and
-      // is solved among itself (it lies within the front piece, apart from the rest of the list).
-      ++map_.stats.recursions;
-      std::vector<Polygon> remaining{std::move(front.polygon)};
-      for (const Item& a : ahead) {
-        clip::ClipRegion<K> region(a.polygon, src_.lines);
-        std::vector<Polygon> outside;
-        for (auto& r : clip::clip_list<K>(remaining, region)) {
-          for (auto& piece : r.inside)
-            map_.hidden.push_back({std::move(piece), front.source, static_cast<std::int32_t>(a.source)});
-          for (auto& piece : r.outside) outside.push_back(std::move(piece));
+        if (ahead.empty()) {
+          map_.visible.push_back({std::move(front.polygon), front.source, -1});
+          continue;
         }
-        remaining.swap(outside);
-        if (remaining.empty()) break;
+        // The rough order was wrong here: what lies ahead hides that much of the front piece, and
+        // is solved among itself (it lies within the front piece, apart from the rest of the list).
+        ++map_.stats.recursions;
+        std::vector<Polygon> remaining{std::move(front.polygon)};
+        for (const Item& a : ahead) {
+          clip::ClipRegion<K> region(a.polygon, src_.lines);
+          std::vector<Polygon> outside;
+          for (auto& r : clip::clip_list<K>(remaining, region)) {
+            for (auto& piece : r.inside)
+              map_.hidden.push_back({std::move(piece), front.source, static_cast<std::int32_t>(a.source)});
+            for (auto& piece : r.outside) outside.push_back(std::move(piece));
+          }
+          remaining.swap(outside);
+          if (remaining.empty()) break;
+        }
+        for (auto& piece : remaining) map_.visible.push_back({std::move(piece), front.source, -1});
+        resolve(ahead);
       }
-      for (auto& piece : remaining) map_.visible.push_back({std::move(piece), front.source, -1});
-      resolve(ahead);
     }
     --depth_;
   }

@@ -1,0 +1,71 @@
+// Internal to hlr_hidden_line: a candidate filter for boxes that come and go, for the area sort.
+//
+// A loose multi-level grid: level l splits the domain into 2^l x 2^l cells, and a box is filed once,
+// at the finest level whose cells are at least as large as the box, in the cell of its lower-left
+// corner; so inserting costs O(1) whatever the box's size, and a query looks at the cells of each
+// level that can hold a box reaching into it. Boxes are conservative (interval bounds of exact
+// points) and the cell arithmetic keeps a cell of slack on the low side, so a query never misses a
+// box that overlaps; it only filters, it decides nothing.
+#pragma once
+
+#include <CGAL/Bbox_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace hlr::hidden_line::detail {
+
+class LooseGrid {
+ public:
+  LooseGrid(const CGAL::Bbox_2& domain, std::size_t expected) : domain_(domain) {
+    if (!(domain_.xmin() <= domain_.xmax() && domain_.ymin() <= domain_.ymax())) domain_ = CGAL::Bbox_2(0, 0, 1, 1);
+    width_ = std::max(domain_.xmax() - domain_.xmin(), 1e-300);
+    height_ = std::max(domain_.ymax() - domain_.ymin(), 1e-300);
+    // About one finest cell per box, at most 2^10 x 2^10.
+    while (levels_ < 11 && (std::size_t(1) << (2 * (levels_ - 1))) < expected) ++levels_;
+    for (int l = 0; l < levels_; ++l) cells_.emplace_back(std::size_t(1) << (2 * l));
+  }
+
+  void insert(std::uint32_t id, const CGAL::Bbox_2& box) {
+    if (id >= boxes_.size()) boxes_.resize(id + 1);
+    boxes_[id] = box;
+    int l = levels_ - 1;
+    while (l > 0 && (box.xmax() - box.xmin() > cell_w(l) || box.ymax() - box.ymin() > cell_h(l))) --l;
+    cells_[l][index(l, cell(box.xmin(), domain_.xmin(), cell_w(l), l), cell(box.ymin(), domain_.ymin(), cell_h(l), l))]
+        .push_back(id);
+  }
+
+  // Calls visit(id) for every inserted id whose box overlaps `box` (each id once).
+  template <class Visit>
+  void query(const CGAL::Bbox_2& box, Visit&& visit) const {
+    for (int l = 0; l < levels_; ++l) {
+      const double w = cell_w(l), h = cell_h(l);
+      const long x0 = cell(box.xmin() - 3 * w, domain_.xmin(), w, l), x1 = cell(box.xmax(), domain_.xmin(), w, l);
+      const long y0 = cell(box.ymin() - 3 * h, domain_.ymin(), h, l), y1 = cell(box.ymax(), domain_.ymin(), h, l);
+      for (long y = y0; y <= y1; ++y)
+        for (long x = x0; x <= x1; ++x)
+          for (std::uint32_t id : cells_[l][index(l, x, y)])
+            if (CGAL::do_overlap(boxes_[id], box)) visit(id);
+    }
+  }
+
+ private:
+  double cell_w(int l) const { return width_ / double(1L << l); }
+  double cell_h(int l) const { return height_ / double(1L << l); }
+  static long cell(double v, double lo, double size, int l) {
+    const double q = std::floor((v - lo) / size);
+    const long n = 1L << l;
+    return q >= double(n - 1) ? n - 1 : q >= 0 ? long(q) : 0;  // clamped: monotone, so nothing is missed
+  }
+  static std::size_t index(int l, long x, long y) { return std::size_t(y) * (std::size_t(1) << l) + std::size_t(x); }
+
+  CGAL::Bbox_2 domain_;
+  double width_ = 1, height_ = 1;
+  int levels_ = 1;
+  std::vector<std::vector<std::vector<std::uint32_t>>> cells_;  // per level, per cell
+  std::vector<CGAL::Bbox_2> boxes_;
+};
+
+}  // namespace hlr::hidden_line::detail

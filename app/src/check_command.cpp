@@ -39,6 +39,7 @@ std::string number(double v) {
 
 int run(CheckOptions options) {
   const std::optional<View> view = resolve_view(options.scene);
+  const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
   if (options.rasters.empty() && options.kernels.empty()) options.rasters = {1024};
   if (!options.diff.empty() && options.rasters.size() + options.kernels.size() != 1) {

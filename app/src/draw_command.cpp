@@ -133,6 +133,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
 
 int run(const DrawOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
+  const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
   exporter::DrawingStyle style;
   if (const auto sheet = exporter::sheet_by_name(options.sheet)) {

@@ -25,7 +25,17 @@ void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel) {
       ->expected(3)
       ->needs(dir)
       ->type_name("X,Y,Z");
+  cmd.add_option("--threads", options.threads, "threads to use (0: every core); the output is the same for any number")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str()
+      ->type_name("N");
   if (kernel) add_kernel_option(cmd, options.kernel);
+}
+
+std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options) {
+  if (options.threads <= 0) return nullptr;
+  return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                               static_cast<std::size_t>(options.threads));
 }
 
 std::optional<View> resolve_view(const SceneOptions& options) {

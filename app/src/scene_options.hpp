@@ -9,7 +9,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <tbb/global_control.h>
+
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,10 +24,15 @@ struct SceneOptions {
   std::string view = "iso";
   std::vector<double> direction, up;
   std::string kernel = "exact";
+  int threads = 0;  // 0: every core
 };
 
-// MESH... (positional), --view, --dir, --up and, unless `kernel` is false, --kernel.
+// MESH... (positional), --view, --dir, --up, --threads and, unless `kernel` is false, --kernel.
 void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel = true);
+
+// Limits oneTBB to options.threads for as long as the returned object lives (0: no limit). The
+// output does not depend on it.
+std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options);
 
 // The view the options name, or nothing after a one-line usage error on stderr.
 std::optional<View> resolve_view(const SceneOptions& options);

@@ -83,6 +83,7 @@ int solve(const SurfacesOptions& options, const View& view, KernelKind kind) {
 
 int run(const SurfacesOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
+  const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
   return with_kernel(options.scene, [&]<class K>(KernelKind kind) { return solve<K>(options, *view, kind); });
 }

@@ -15,6 +15,10 @@
 
 #include <hlr/hidden_line/lines.hpp>
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -23,7 +27,13 @@ namespace detail {
 
 // Ids of boxes in a uniform grid over the plane, for candidate queries. Boxes are conservative
 // (CGAL's bounding boxes of exact points are interval bounds), so a query never misses a box that
-// overlaps; it only filters, it decides nothing.
+// overlaps; it only filters, it decides nothing. Queries do not change the grid: each thread
+// brings its own QueryScratch (the marks that report a box once).
+struct QueryScratch {
+  std::vector<std::uint32_t> stamp;
+  std::uint32_t round = 0;
+};
+
 class BoxGrid {
  public:
   BoxGrid(const CGAL::Bbox_2& domain, std::size_t expected) : domain_(domain) {
@@ -41,19 +51,20 @@ class BoxGrid {
   }
 
   void insert(std::uint32_t id, const CGAL::Bbox_2& box) {
-    if (id >= stamp_.size()) stamp_.resize(id + 1, 0), boxes_.resize(id + 1);
+    if (id >= boxes_.size()) boxes_.resize(id + 1);
     boxes_[id] = box;
     for_cells(box, [&](std::vector<std::uint32_t>& cell) { cell.push_back(id); });
   }
 
   // Calls visit(id) once for every inserted box that overlaps `box`.
   template <class Visit>
-  void query(const CGAL::Bbox_2& box, Visit&& visit) {
-    ++round_;
-    for_cells(box, [&](std::vector<std::uint32_t>& cell) {
+  void query(const CGAL::Bbox_2& box, QueryScratch& scratch, Visit&& visit) const {
+    if (scratch.stamp.size() < boxes_.size()) scratch.stamp.resize(boxes_.size(), 0);
+    const std::uint32_t round = ++scratch.round;
+    for_cells(box, [&](const std::vector<std::uint32_t>& cell) {
       for (std::uint32_t id : cell) {
-        if (stamp_[id] == round_) continue;
-        stamp_[id] = round_;
+        if (scratch.stamp[id] == round) continue;
+        scratch.stamp[id] = round;
         if (CGAL::do_overlap(boxes_[id], box)) visit(id);
       }
     });
@@ -61,7 +72,15 @@ class BoxGrid {
 
  private:
   template <class Each>
+  void for_cells(const CGAL::Bbox_2& box, Each&& each) const {
+    for_cell_indices(box, [&](std::size_t i) { each(cells_[i]); });
+  }
+  template <class Each>
   void for_cells(const CGAL::Bbox_2& box, Each&& each) {
+    for_cell_indices(box, [&](std::size_t i) { each(cells_[i]); });
+  }
+  template <class Each>
+  void for_cell_indices(const CGAL::Bbox_2& box, Each&& each) const {
     auto index = [](double v, double lo, double size, long n) {
       const double q = std::floor((v - lo) / size);
       return q >= double(n - 1) ? n - 1 : q >= 0 ? long(q) : 0;  // NaN and below go to 0
@@ -69,7 +88,7 @@ class BoxGrid {
     const long x0 = index(box.xmin(), domain_.xmin(), cell_x_, nx_), x1 = index(box.xmax(), domain_.xmin(), cell_x_, nx_);
     const long y0 = index(box.ymin(), domain_.ymin(), cell_y_, ny_), y1 = index(box.ymax(), domain_.ymin(), cell_y_, ny_);
     for (long y = y0; y <= y1; ++y)
-      for (long x = x0; x <= x1; ++x) each(cells_[std::size_t(y * nx_ + x)]);
+      for (long x = x0; x <= x1; ++x) each(std::size_t(y * nx_ + x));
   }
 
   CGAL::Bbox_2 domain_;
@@ -77,8 +96,6 @@ class BoxGrid {
   long nx_ = 1, ny_ = 1;
   std::vector<std::vector<std::uint32_t>> cells_;
   std::vector<CGAL::Bbox_2> boxes_;
-  std::vector<std::uint32_t> stamp_;
-  std::uint32_t round_ = 0;
 };
 
 // A line's image a -> b in the view plane, and parameters along it.
@@ -185,25 +202,36 @@ class Classifier {
   const ViewPoint<K>& view_point(std::uint32_t mesh, std::uint32_t v) const { return view_points_[mesh][v]; }
   std::int32_t source_of_face(std::uint32_t mesh, std::uint32_t face) const { return source_of_face_[mesh][face]; }
 
+  // What one thread needs to classify lines; the classifier itself is shared and read only.
+  struct Scratch {
+    QueryScratch fragments, edge_on;
+    std::vector<Occluder<K>> occluders;
+  };
+
   // Splits the line into pieces; `own` are the sources whose plane contains the line (they never
   // lie strictly nearer), sorted.
-  std::vector<LinePiece<K>> classify(const ViewPoint<K>& a, const ViewPoint<K>& b, const std::vector<std::int32_t>& own) {
+  std::vector<LinePiece<K>> classify(const ViewPoint<K>& a, const ViewPoint<K>& b, const std::vector<std::int32_t>& own,
+                                     Scratch& scratch) const {
     const P pa = G::point(a.x, a.y), pb = G::point(b.x, b.y);
     if (G::equal(pa, pb)) return {};
     const ImageLine<K> line(pa, pb);
+    auto& occluders_ = scratch.occluders;
     occluders_.clear();
 
-    grid_.query(line.bbox(), [&](std::uint32_t i) {
+    grid_.query(line.bbox(), scratch.fragments, [&](std::uint32_t i) {
       const Fragment<K>& frag = map_.visible[i];
       if (std::binary_search(own.begin(), own.end(), std::int32_t(frag.source))) return;
       const DepthPlane<K>& plane = sources_.polygons[frag.source].plane;
+      // Never strictly nearer along the line (the depth difference is linear in t).
+      if (G::sign_above(plane.a, plane.b, plane.c, a.x, a.y, a.z) <= 0 &&
+          G::sign_above(plane.a, plane.b, plane.c, b.x, b.y, b.z) <= 0)
+        return;
       const FT f0 = plane.a * G::x(pa) + plane.b * G::y(pa) + plane.c - a.z;
       const FT f1 = plane.a * G::x(pb) + plane.b * G::y(pb) + plane.c - b.z;
-      if (G::sign(f0) <= 0 && G::sign(f1) <= 0) return;  // never strictly nearer along the line
       for (const auto& [lo, hi] : closure_intervals(line, frag.polygon)) occluders_.push_back({lo, hi, f0, f1});
     });
 
-    edge_on_grid_.query(line.bbox(), [&](std::uint32_t i) {
+    edge_on_grid_.query(line.bbox(), scratch.edge_on, [&](std::uint32_t i) {
       const auto [m, f] = sources_.edge_on_faces[i];
       const auto& face = meshes_[m].faces[f];
       for (std::uint32_t v : face)
@@ -282,7 +310,6 @@ class Classifier {
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
   BoxGrid grid_, edge_on_grid_;
-  std::vector<Occluder<K>> occluders_;
 };
 
 }  // namespace detail
@@ -293,19 +320,19 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
                           const LineOptions& options) {
   using FT = typename Geometry<K>::FT;
   detail::Classifier<K> classifier(meshes, sources, map);
+  // The lines first, each with the sources it lies in (`own`, sorted); then their pieces, in
+  // parallel over chunks of lines: each line is classified on its own, so the result does not
+  // depend on the number of threads.
   LineSet<K> out;
-  std::vector<std::int32_t> own;
-  auto add_own = [&](std::uint32_t mesh, const std::vector<std::uint32_t>& faces) {
-    for (std::uint32_t f : faces)
-      if (const std::int32_t s = classifier.source_of_face(mesh, f); s >= 0) own.push_back(s);
-  };
-  auto finish = [&](FeatureLine<K> line) {
+  std::vector<std::vector<std::int32_t>> owns;
+  auto add = [&](FeatureLine<K> line, std::initializer_list<std::pair<std::uint32_t, const std::vector<std::uint32_t>*>> sides) {
+    std::vector<std::int32_t> own;
+    for (const auto& [mesh, faces] : sides)
+      for (std::uint32_t f : *faces)
+        if (const std::int32_t s = classifier.source_of_face(mesh, f); s >= 0) own.push_back(s);
     std::sort(own.begin(), own.end());
-    line.pieces = classifier.classify(line.a, line.b, own);
-    ++out.stats.by_kind[static_cast<int>(line.kind)];
-    if (line.pieces.empty()) ++out.stats.point_in_view;
-    for (const auto& p : line.pieces) ++(p.visible ? out.stats.visible_pieces : out.stats.hidden_pieces);
     out.lines.push_back(std::move(line));
+    owns.push_back(std::move(own));
   };
 
   for (std::uint32_t m = 0; m < meshes.size(); ++m) {
@@ -317,9 +344,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
       line.mesh = m;
       line.v0 = edge.v0;
       line.v1 = edge.v1;
-      own.clear();
-      add_own(m, edge.faces);
-      finish(std::move(line));
+      add(std::move(line), {{m, &edge.faces}});
     }
   }
   if (options.intersections) {
@@ -334,11 +359,22 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
       line.kind = FeatureKind::intersection;
       line.mesh = s.mesh_a;
       line.meeting_degrees = s.meeting_degrees;
-      own.clear();
-      add_own(s.mesh_a, s.faces_a);
-      add_own(s.mesh_b, s.faces_b);
-      finish(std::move(line));
+      add(std::move(line), {{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
     }
+  }
+
+  tbb::enumerable_thread_specific<typename detail::Classifier<K>::Scratch> scratch;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.lines.size(), 16), [&](const auto& range) {
+    auto& mine = scratch.local();
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      FeatureLine<K>& line = out.lines[i];
+      line.pieces = classifier.classify(line.a, line.b, owns[i], mine);
+    }
+  });
+  for (const auto& line : out.lines) {
+    ++out.stats.by_kind[static_cast<int>(line.kind)];
+    if (line.pieces.empty()) ++out.stats.point_in_view;
+    for (const auto& p : line.pieces) ++(p.visible ? out.stats.visible_pieces : out.stats.hidden_pieces);
   }
   out.stats.lines = out.lines.size();
   return out;
@@ -370,11 +406,12 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
   // Visible spans first, then hidden ones; each loses what earlier, collinear spans already draw.
   std::vector<DrawnSegment<K>> out;
   detail::BoxGrid grid(domain, std::max<std::size_t>(spans.size(), 1));
+  detail::QueryScratch scratch;
   for (const Span& span : spans) {
     const P a = span.line.at(span.t0), b = span.line.at(span.t1);
     const CGAL::Bbox_2 box = G::bbox(a) + G::bbox(b);
     std::vector<std::pair<FT, FT>> covered;
-    grid.query(box, [&](std::uint32_t i) {
+    grid.query(box, scratch, [&](std::uint32_t i) {
       const DrawnSegment<K>& d = out[i];
       if (G::orientation(a, b, d.a) != 0 || G::orientation(a, b, d.b) != 0) return;
       FT lo = span.line.param(d.a), hi = span.line.param(d.b);

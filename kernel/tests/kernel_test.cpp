@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 namespace hlr {
 namespace {
 
@@ -65,6 +68,48 @@ TEST(ExactKernel, ToDoubleRoundsToNearest) {
   auto p = G::line_intersection(G::point(0, 0), G::point(6, 13), G::point(1, -5), G::point(1, 5));
   EXPECT_EQ(G::to_double(G::y(p)), 2.1666666666666665);
   EXPECT_EQ(G::to_double(ExactKernel::FT(0.1)), 0.1);
+}
+
+}  // namespace
+}  // namespace hlr
+
+namespace hlr {
+namespace {
+
+// The shortcuts of the exact traits (identical points, interval filters) against CGAL's exact
+// evaluation, on random values and on values snapped to a coarse grid (zeros and ties in most
+// draws), near the origin and far from it, and of mixed magnitude (1e-9 next to 1e9).
+TEST(ExactKernel, FilteredShortcutsAgreeWithExactEvaluation) {
+  using G = Geometry<ExactKernel>;
+  using FT = ExactKernel::FT;
+  std::mt19937_64 random(20261202);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  auto value = [&](int mode) {
+    switch (mode) {
+      case 0: return unit(random);
+      case 1: return std::round(unit(random) * 4) / 4;                       // coarse grid
+      case 2: return 1e9 + std::round(unit(random) * 8);                     // far from the origin
+      default: return unit(random) < 0 ? unit(random) * 1e-9 : unit(random) * 1e9;  // mixed magnitude
+    }
+  };
+  std::size_t zeros = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const int mode = i % 4;
+    // Constructed numbers (a quotient, a difference), as planes and view points are.
+    const FT a = FT(value(mode)) / FT(3), b = FT(value(mode)) - FT(value(mode)), c = FT(value(mode));
+    const FT x = FT(value(mode)), y = FT(value(mode));
+    const FT z = mode == 1 && i % 8 == 1 ? a * x + b * y + c : FT(value(mode));  // a tie now and then
+    const int want = CGAL::sign(CGAL::exact(a) * CGAL::exact(x) + CGAL::exact(b) * CGAL::exact(y) + CGAL::exact(c) -
+                                CGAL::exact(z));
+    ASSERT_EQ(G::sign_above(a, b, c, x, y, z), want) << i;
+    zeros += want == 0;
+
+    const auto p = G::point(value(mode), value(mode)), q = G::point(value(mode), value(mode));
+    const auto r = i % 3 == 0 ? p : G::point(value(mode), value(mode));  // the same point object
+    ASSERT_EQ(G::orientation(p, q, r), static_cast<int>(CGAL::orientation(p, q, r))) << i;
+    ASSERT_EQ(G::equal(p, r), p == r) << i;
+  }
+  EXPECT_GT(zeros, 100u) << "the draws must hit ties";
 }
 
 }  // namespace

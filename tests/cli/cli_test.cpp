@@ -719,6 +719,35 @@ class CliDraw : public CliClip {
   }
 };
 
+TEST_F(CliDraw, OneThreadAndTwoDrawTheSameBytes) {
+  // Every fixture in two views: the SVG and DXF byte for byte, the JSON but for its timings.
+  auto without_times = [](json doc) {
+    doc.at("stats").erase("seconds");
+    doc.at("stats").erase("stage_seconds");
+    return doc;
+  };
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(kScenes)) {
+    if (entry.path().extension() != ".off") continue;
+    for (const char* view : {"iso", "front"}) {
+      const std::string stem = entry.path().stem().string() + "_" + view;
+      for (const char* threads : {"1", "2"}) {
+        const std::string base = stem + "_" + threads;
+        Outcome run = hlr({"draw", entry.path().string(), "--view", view, "--threads", threads, "-o",
+                           out(base + ".svg").string(), "-o", out(base + ".dxf").string(), "-o", out(base + ".json").string()});
+        ASSERT_EQ(run.exit_code, 0) << stem << ": " << run.err;
+      }
+      for (const char* ext : {".svg", ".dxf"})
+        EXPECT_EQ(slurp(out(stem + "_1" + ext)), slurp(out(stem + "_2" + ext))) << stem << ext;
+      EXPECT_EQ(without_times(json::parse(slurp(out(stem + "_1.json")))),
+                without_times(json::parse(slurp(out(stem + "_2.json")))))
+          << stem;
+      ++files;
+    }
+  }
+  EXPECT_GE(files, 40u);
+}
+
 TEST_F(CliDraw, DrawsTheBundledBracketIntoSvgDxfAndJson) {
   const std::string mesh = (kScenes / "l_bracket.off").string();
   Outcome run = hlr({"draw", mesh, "--view", "iso", "-o", out("b.svg").string(), "-o", out("b.dxf").string(), "-o",
@@ -984,6 +1013,7 @@ TEST_F(CliDraw, BadMergeDistanceIsAUsageError) {
   const std::string cube = (kScenes / "cube.off").string();
   for (const char* bad : {"-0.01", "2", "fine"}) expect_failure({cube, "--merge-distance", bad, "-o", out("c.svg").string()}, 2, "hlr: ");
   for (const char* bad : {"-1", "91", "steep"}) expect_failure({cube, "--contact-angle", bad, "-o", out("c.svg").string()}, 2, "hlr: ");
+  for (const char* bad : {"-1", "many"}) expect_failure({cube, "--threads", bad, "-o", out("c.svg").string()}, 2, "hlr: ");
 }
 
 TEST_F(CliDraw, UnknownSubcommandIsNamed) {

@@ -78,6 +78,11 @@ struct CgalGeometry {
   static Point point(const FT& x, const FT& y) requires(!std::is_same_v<FT, double>) { return Point(x, y); }
   static int sign(const FT& v) { return static_cast<int>(CGAL::sign(v)); }
   static int orientation(const Point& a, const Point& b, const Point& c) {
+    // Two corners that are one shared Epeck point (a mesh vertex in two faces) make the
+    // orientation 0: known without the interval filter, which cannot certify a zero and would
+    // fall back to exact arithmetic.
+    if constexpr (exact_constructions)
+      if (CGAL::identical(a, b) || CGAL::identical(b, c) || CGAL::identical(a, c)) return 0;
     return static_cast<int>(CGAL::orientation(a, b, c));
   }
   // Comparisons first look at the interval approximations Epeck keeps with every point, which
@@ -109,6 +114,7 @@ struct CgalGeometry {
   }
   static bool equal(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
+      if (CGAL::identical(a, b)) return true;
       if (compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x()) % 2 != 0 ||
           compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y()) % 2 != 0)
         return false;
@@ -137,6 +143,18 @@ struct CgalGeometry {
 
   static FT x(const Point& p) { return p.x(); }
   static FT y(const Point& p) { return p.y(); }
+  // sign(a x + b y + c - z): where a plane z = a x + b y + c lies against depth z at (x, y). Decided
+  // on the interval approximations Epeck keeps when they suffice, before any lazy node is built.
+  static int sign_above(const FT& a, const FT& b, const FT& c, const FT& px, const FT& py, const FT& z) {
+    if constexpr (exact_constructions) {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const auto v = CGAL::approx(a) * CGAL::approx(px) + CGAL::approx(b) * CGAL::approx(py) + CGAL::approx(c) -
+                     CGAL::approx(z);
+      if (v.inf() > 0) return 1;
+      if (v.sup() < 0) return -1;
+    }
+    return sign(a * px + b * py + c - z);
+  }
   // The double nearest to v (ties to the lower one): output is rounded once, correctly.
   static double to_double(const FT& v) {
     if constexpr (exact_constructions) {
@@ -193,6 +211,9 @@ struct Geometry<DoubleKernel> {
   static Point midpoint(const Point& a, const Point& b) { return {(a.x + b.x) / 2, (a.y + b.y) / 2}; }
   static double x(const Point& p) { return p.x; }
   static double y(const Point& p) { return p.y; }
+  static int sign_above(double a, double b, double c, double px, double py, double z) {
+    return sign(a * px + b * py + c - z);
+  }
   static double to_double(double v) { return v; }
   static CGAL::Bbox_2 bbox(const Point& p) { return {p.x, p.y, p.x, p.y}; }
   static std::string exact_string(double v) { return exact_string_of_double(v); }

@@ -3,6 +3,7 @@
 # The sourcing script runs under `set -euo pipefail`. Sourcing this file reads the options from
 # the environment, with these defaults:
 #   VIEWS=front,top,right,iso  SKIP=  REPEAT=5 (peer)  HLR_REPEAT=1  THREADS=1 (peer)
+#   HLR_THREADS= (hlr --threads; default: hlr's own, every core)
 #   TIMEOUT=0 (per hlr run, 0 = none)  HLR=build/app/hlr  PYTHON=/usr/bin/python3  KEEP=DIR
 # and sets: root (repo root, also the current folder), views, skip, repeat, hlr_repeat, threads,
 # timeout_s, hlr, py, peer, scenes, bench_dir. The functions below do the rest:
@@ -32,6 +33,7 @@ skip=",${SKIP:-},"
 repeat="${REPEAT:-5}"
 hlr_repeat="${HLR_REPEAT:-1}"
 threads="${THREADS:-1}"
+hlr_threads="${HLR_THREADS:-}"
 timeout_s="${TIMEOUT:-0}"
 hlr="${HLR:-$root/build/app/hlr}"
 py="${PYTHON:-/usr/bin/python3}"
@@ -84,7 +86,7 @@ bench_skip() {
 
 bench_hlr() {
   local name="$1" view="$2" tag="$3" base="$4"; shift 4
-  local cmd=("$hlr" "$@" -o "$base.json") status=ok r rc
+  local cmd=("$hlr" "$@" ${hlr_threads:+--threads "$hlr_threads"} -o "$base.json") status=ok r rc
   if [ "$timeout_s" != 0 ]; then cmd=(timeout "$timeout_s" "${cmd[@]}"); fi
   : >"$base.stats"
   for ((r = 1; r <= hlr_repeat; r++)); do

@@ -51,7 +51,8 @@
 #   REPEAT   peer repeats (minimum is taken)     (default 5; REPEAT=1 when time is short)
 #   HLR_REPEAT  runs of each hlr command; the one with the least stats.seconds is reported
 #            (default 1)
-#   THREADS  peer threads                        (default 1; hlr is single-threaded)
+#   THREADS  peer threads                        (default 1)
+#   HLR_THREADS  hlr --threads N                  (default: hlr's default, every core)
 #   TIMEOUT  seconds allowed per hlr run, 0 = no limit (default 0); a timeout counts as "failed"
 #   HLR      hlr binary                          (default build/app/hlr)
 #   PYTHON   python for JSON/CSV work            (default /usr/bin/python3)

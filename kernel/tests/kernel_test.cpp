@@ -105,7 +105,9 @@ TEST(ExactKernel, FilteredShortcutsAgreeWithExactEvaluation) {
     zeros += want == 0;
 
     const auto p = G::point(value(mode), value(mode)), q = G::point(value(mode), value(mode));
-    const auto r = i % 3 == 0 ? p : G::point(value(mode), value(mode));  // the same point object
+    // The same point object, a constructed point on the line (collinear, not a single double), or
+    // a point of two doubles.
+    const auto r = i % 3 == 0 ? p : i % 3 == 1 ? G::midpoint(p, q) : G::point(value(mode), value(mode));
     ASSERT_EQ(G::orientation(p, q, r), static_cast<int>(CGAL::orientation(p, q, r))) << i;
     ASSERT_EQ(G::equal(p, r), p == r) << i;
   }

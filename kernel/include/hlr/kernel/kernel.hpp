@@ -81,18 +81,8 @@ struct CgalGeometry {
     // Two corners that are one shared Epeck point (a mesh vertex in two faces) make the
     // orientation 0: known without the interval filter, which cannot certify a zero and would
     // fall back to exact arithmetic.
-    if constexpr (exact_constructions) {
+    if constexpr (exact_constructions)
       if (CGAL::identical(a, b) || CGAL::identical(b, c) || CGAL::identical(a, c)) return 0;
-      // Points whose intervals are single doubles (input coordinates, as in axis views) are decided
-      // by Epick's predicate on those doubles: exact, and cheap where the answer is 0.
-      const auto &pa = CGAL::approx(a), &pb = CGAL::approx(b), &pc = CGAL::approx(c);
-      auto single = [](const auto& p) { return p.x().inf() == p.x().sup() && p.y().inf() == p.y().sup(); };
-      if (single(pa) && single(pb) && single(pc)) {
-        using IP = EpickKernel::Point_2;
-        return static_cast<int>(CGAL::orientation(IP(pa.x().inf(), pa.y().inf()), IP(pb.x().inf(), pb.y().inf()),
-                                                  IP(pc.x().inf(), pc.y().inf())));
-      }
-    }
     return static_cast<int>(CGAL::orientation(a, b, c));
   }
   // Comparisons first look at the interval approximations Epeck keeps with every point, which

@@ -67,6 +67,7 @@ Scene load_scene(const std::vector<std::string>& paths) {
     scene.input.files.push_back(path);
     scene.input.faces += scene.meshes.back().faces.size();
     scene.input.vertices += scene.meshes.back().vertices.size();
+    scene.input.welded_vertices += report.welded_vertices;
   }
   return scene;
 }

@@ -388,6 +388,7 @@ std::string lines_json(const LineDrawing& drawing) {
       {"drawn_visible_length", drawing.visible_length()},
       {"drawn_hidden_length", drawing.hidden_length()},
       {"crease_degrees", drawing.crease_degrees},
+      {"welded_vertices", drawing.input.welded_vertices},
   };
   if (drawing.merged_segments) {
     out["stats"]["merged_segments"] = *drawing.merged_segments;

@@ -118,6 +118,7 @@ std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
       {"seconds", doc.times.total},
       {"stage_seconds", {{"read", doc.times.read}, {"sources", doc.times.sources}, {"sort", doc.times.sort}}},
       {"faces", ss.faces},
+      {"welded_vertices", doc.input.welded_vertices},
       {"back_faces_removed", ss.back_faces_removed},
       {"edge_on_faces_removed", ss.edge_on_faces_removed},
       {"faces_consolidated", ss.faces_consolidated},

@@ -7,7 +7,6 @@
 #include "scene_faces.hpp"
 #include "scene_readers.hpp"
 
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>

@@ -20,6 +20,7 @@ namespace hlr::exporter {
 struct InputInfo {
   std::vector<std::string> files;
   std::size_t faces = 0, vertices = 0;
+  std::size_t welded_vertices = 0;  // stats: vertices import replaced by an equal earlier one
 };
 
 // The view as the documents write it: the orthonormal frame in double.

@@ -149,16 +149,27 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   auto add = [&](const FT& t) {
     if (!unit || (FT(0) < t && t < FT(1))) ts.push_back(t);
   };
+  // With `unit`, parameters outside (0, 1) are known from predicates before any is constructed: a
+  // corner on the line lies strictly between a and b along the line's main axis, a crossing exactly
+  // when a and b lie strictly on opposite sides of the crossing edge's support line.
+  auto between = [&](const auto& p) {
+    const int lo = line.along_x ? G::compare_x(line.a, p) : G::compare_y(line.a, p);
+    const int hi = line.along_x ? G::compare_x(p, line.b) : G::compare_y(p, line.b);
+    return lo != 0 && lo == hi;
+  };
+  std::vector<int> side;
   auto scan = [&](const clip::Contour<K>& c) {
     const std::size_t n = c.size();
+    side.resize(n);
+    for (std::size_t i = 0; i < n; ++i) side[i] = G::orientation(line.a, line.b, c.points[i]);
     for (std::size_t i = 0; i < n; ++i) {
-      const auto &p = c.points[i], &q = c.points[(i + 1) % n];
-      const int op = G::orientation(line.a, line.b, p), oq = G::orientation(line.a, line.b, q);
+      const int op = side[i], oq = side[(i + 1) % n];
       if (op == 0) {
-        add(line.param(p));
+        if (!unit || between(c.points[i])) add(line.param(c.points[i]));
       } else if (oq != 0 && op != oq) {
         const auto [c0, c1] = edge_line(c, i);
-        add(line.param_of_crossing(c0, c1));
+        if (!unit || G::orientation(c0, c1, line.a) * G::orientation(c0, c1, line.b) < 0)
+          add(line.param_of_crossing(c0, c1));
       }
     }
   };

@@ -510,7 +510,7 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
   auto layer = [&](std::uint32_t mesh, bool visible) {
     std::string name = visible ? "VISIBLE" : "HIDDEN";
     if (!per_part) return name;
-    std::string part = mesh < names.size() ? names[mesh] : "MESH-" + std::to_string(mesh);
+    std::string part = names[mesh];  // part_names names every mesh a segment has
     for (char& c : part) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return part + "-" + name;
   };

@@ -1,4 +1,5 @@
-// Internal to hlr_hidden_line: a candidate filter for boxes that come and go, for the area sort.
+// Internal to hlr_hidden_line: the candidate filter for boxes, for the area sort (whose pieces come
+// and go), line classification and precedence. Queries do not change it, so threads may share it.
 //
 // A loose multi-level grid: level l splits the domain into 2^l x 2^l cells, and a box is filed once,
 // at the finest level whose cells are at least as large as the box, in the cell of its lower-left

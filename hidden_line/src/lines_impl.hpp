@@ -15,6 +15,8 @@
 
 #include <hlr/hidden_line/lines.hpp>
 
+#include "box_index.hpp"
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -24,79 +26,6 @@
 
 namespace hlr::hidden_line {
 namespace detail {
-
-// Ids of boxes in a uniform grid over the plane, for candidate queries. Boxes are conservative
-// (CGAL's bounding boxes of exact points are interval bounds), so a query never misses a box that
-// overlaps; it only filters, it decides nothing. Queries do not change the grid: each thread
-// brings its own QueryScratch (the marks that report a box once).
-struct QueryScratch {
-  std::vector<std::uint32_t> stamp;
-  std::uint32_t round = 0;
-};
-
-class BoxGrid {
- public:
-  BoxGrid(const CGAL::Bbox_2& domain, std::size_t expected) : domain_(domain) {
-    if (!(domain_.xmin() <= domain_.xmax() && domain_.ymin() <= domain_.ymax())) domain_ = CGAL::Bbox_2(0, 0, 1, 1);
-    const CGAL::Bbox_2& d = domain_;
-    const double w = std::max(d.xmax() - d.xmin(), 1e-300), h = std::max(d.ymax() - d.ymin(), 1e-300);
-    const double cells = std::clamp(double(expected), 1.0, 4e6);
-    cell_ = std::sqrt(w * h / cells);
-    if (!(cell_ > 0) || !std::isfinite(cell_)) cell_ = std::max(w, h);
-    nx_ = std::clamp<long>(long(w / cell_) + 1, 1, 4096);
-    ny_ = std::clamp<long>(long(h / cell_) + 1, 1, 4096);
-    cell_x_ = w / double(nx_);
-    cell_y_ = h / double(ny_);
-    cells_.resize(std::size_t(nx_ * ny_));
-  }
-
-  void insert(std::uint32_t id, const CGAL::Bbox_2& box) {
-    if (id >= boxes_.size()) boxes_.resize(id + 1);
-    boxes_[id] = box;
-    for_cells(box, [&](std::vector<std::uint32_t>& cell) { cell.push_back(id); });
-  }
-
-  // Calls visit(id) once for every inserted box that overlaps `box`.
-  template <class Visit>
-  void query(const CGAL::Bbox_2& box, QueryScratch& scratch, Visit&& visit) const {
-    if (scratch.stamp.size() < boxes_.size()) scratch.stamp.resize(boxes_.size(), 0);
-    const std::uint32_t round = ++scratch.round;
-    for_cells(box, [&](const std::vector<std::uint32_t>& cell) {
-      for (std::uint32_t id : cell) {
-        if (scratch.stamp[id] == round) continue;
-        scratch.stamp[id] = round;
-        if (CGAL::do_overlap(boxes_[id], box)) visit(id);
-      }
-    });
-  }
-
- private:
-  template <class Each>
-  void for_cells(const CGAL::Bbox_2& box, Each&& each) const {
-    for_cell_indices(box, [&](std::size_t i) { each(cells_[i]); });
-  }
-  template <class Each>
-  void for_cells(const CGAL::Bbox_2& box, Each&& each) {
-    for_cell_indices(box, [&](std::size_t i) { each(cells_[i]); });
-  }
-  template <class Each>
-  void for_cell_indices(const CGAL::Bbox_2& box, Each&& each) const {
-    auto index = [](double v, double lo, double size, long n) {
-      const double q = std::floor((v - lo) / size);
-      return q >= double(n - 1) ? n - 1 : q >= 0 ? long(q) : 0;  // NaN and below go to 0
-    };
-    const long x0 = index(box.xmin(), domain_.xmin(), cell_x_, nx_), x1 = index(box.xmax(), domain_.xmin(), cell_x_, nx_);
-    const long y0 = index(box.ymin(), domain_.ymin(), cell_y_, ny_), y1 = index(box.ymax(), domain_.ymin(), cell_y_, ny_);
-    for (long y = y0; y <= y1; ++y)
-      for (long x = x0; x <= x1; ++x) each(std::size_t(y * nx_ + x));
-  }
-
-  CGAL::Bbox_2 domain_;
-  double cell_ = 1, cell_x_ = 1, cell_y_ = 1;
-  long nx_ = 1, ny_ = 1;
-  std::vector<std::vector<std::uint32_t>> cells_;
-  std::vector<CGAL::Bbox_2> boxes_;
-};
 
 // A line's image a -> b in the view plane, and parameters along it.
 template <class K>
@@ -215,7 +144,6 @@ class Classifier {
 
   // What one thread needs to classify lines; the classifier itself is shared and read only.
   struct Scratch {
-    QueryScratch fragments, edge_on;
     std::vector<Occluder<K>> occluders;
   };
 
@@ -229,7 +157,7 @@ class Classifier {
     auto& occluders_ = scratch.occluders;
     occluders_.clear();
 
-    grid_.query(line.bbox(), scratch.fragments, [&](std::uint32_t i) {
+    grid_.query(line.bbox(), [&](std::uint32_t i) {
       const Fragment<K>& frag = map_.visible[i];
       if (std::binary_search(own.begin(), own.end(), std::int32_t(frag.source))) return;
       const DepthPlane<K>& plane = sources_.polygons[frag.source].plane;
@@ -242,7 +170,7 @@ class Classifier {
       for (const auto& [lo, hi] : closure_intervals(line, frag.polygon)) occluders_.push_back({lo, hi, f0, f1});
     });
 
-    edge_on_grid_.query(line.bbox(), scratch.edge_on, [&](std::uint32_t i) {
+    edge_on_grid_.query(line.bbox(), [&](std::uint32_t i) {
       const auto [m, f] = sources_.edge_on_faces[i];
       const auto& face = meshes_[m].faces[f];
       for (std::uint32_t v : face)
@@ -320,7 +248,7 @@ class Classifier {
   const VisibilityMap<K>& map_;
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
-  BoxGrid grid_, edge_on_grid_;
+  LooseGrid grid_, edge_on_grid_;
 };
 
 }  // namespace detail
@@ -416,13 +344,12 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
 
   // Visible spans first, then hidden ones; each loses what earlier, collinear spans already draw.
   std::vector<DrawnSegment<K>> out;
-  detail::BoxGrid grid(domain, std::max<std::size_t>(spans.size(), 1));
-  detail::QueryScratch scratch;
+  detail::LooseGrid grid(domain, spans.size());
   for (const Span& span : spans) {
     const P a = span.line.at(span.t0), b = span.line.at(span.t1);
     const CGAL::Bbox_2 box = G::bbox(a) + G::bbox(b);
     std::vector<std::pair<FT, FT>> covered;
-    grid.query(box, scratch, [&](std::uint32_t i) {
+    grid.query(box, [&](std::uint32_t i) {
       const DrawnSegment<K>& d = out[i];
       if (G::orientation(a, b, d.a) != 0 || G::orientation(a, b, d.b) != 0) return;
       FT lo = span.line.param(d.a), hi = span.line.param(d.b);

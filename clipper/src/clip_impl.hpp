@@ -122,6 +122,7 @@ struct InputEdge {
   std::uint8_t role;  // 0 subject, 1 clip
   std::uint32_t contour;
   CGAL::Bbox_2 box;
+  LineId line_at_a = 0, line_at_b = 0;  // the lines of the contour's edges before and after this one
 };
 
 // Calls visit(i, j) for every pair of edges whose boxes overlap (sweep over x).
@@ -213,7 +214,7 @@ void Overlay<K>::add_contour(const Contour<K>& c, std::uint8_t role, std::uint32
     CGAL::Bbox_2 box = G::bbox(c.points[i]) + G::bbox(c.points[j]);
     // A clip edge that cannot reach the subject's box can neither cut it nor bound a result.
     if (filter && !boxes_overlap(box, *filter)) continue;
-    edges_.push_back({base + i, base + j, c.lines[i], role, contour_id, box});
+    edges_.push_back({base + i, base + j, c.lines[i], role, contour_id, box, c.lines[i == 0 ? n - 1 : i - 1], c.lines[j]});
   }
 }
 
@@ -234,11 +235,18 @@ void Overlay<K>::test_pair(std::uint32_t i, std::uint32_t j) {
   const P& p2 = raw_[e.b];
   const P& q1 = raw_[f.a];
   const P& q2 = raw_[f.b];
-  const int o1 = G::orientation(p1, p2, q1);
-  const int o2 = G::orientation(p1, p2, q2);
+  // An endpoint lies on its own edge's line and on the line of the edge that meets it there
+  // (corner_on_line); on the exact kernel those orientations are 0 without arithmetic.
+  auto orientation = [](const P& a, const P& b, LineId ab, const InputEdge& other, bool at_b, const P& q) {
+    if constexpr (G::exact_constructions)
+      if (other.line == ab || (at_b ? other.line_at_b : other.line_at_a) == ab) return 0;
+    return G::orientation(a, b, q);
+  };
+  const int o1 = orientation(p1, p2, e.line, f, false, q1);
+  const int o2 = orientation(p1, p2, e.line, f, true, q2);
   if (o1 * o2 > 0) return;
-  const int o3 = G::orientation(q1, q2, p1);
-  const int o4 = G::orientation(q1, q2, p2);
+  const int o3 = orientation(q1, q2, f.line, e, false, p1);
+  const int o4 = orientation(q1, q2, f.line, e, true, p2);
   if (o3 * o4 > 0) return;
   if (o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0) {
     if (e.role == f.role) throw ClipError("contours of one polygon cross each other");

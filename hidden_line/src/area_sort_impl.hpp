@@ -73,8 +73,11 @@ class AreaSort {
       for (std::size_t i = 0; i < n; ++i) {
         const P &p = own.points[i], &q = own.points[(i + 1) % n];
         auto all_on = [&](const clip::Contour<K>& c, int side) {
-          for (const P& r : c.points)
-            if (G::orientation(p, q, r) == -side) return false;
+          for (std::size_t k = 0; k < c.size(); ++k) {
+            if constexpr (G::exact_constructions)
+              if (clip::corner_on_line(c, k, own.lines[i])) continue;  // on the line: orientation 0
+            if (G::orientation(p, q, c.points[k]) == -side) return false;
+          }
           return true;
         };
         if (all_on(own, 1) && all_on(other, -1)) return true;

@@ -41,6 +41,14 @@ struct Contour {
   std::size_t size() const { return points.size(); }
 };
 
+// Whether corner i is known to lie on `line` without arithmetic: it does on the support lines of
+// the two edges that meet there. On the exact kernel the orientation of that corner against any two
+// points of the line is then 0, which the filters cannot certify and would leave to exact arithmetic.
+template <class K>
+bool corner_on_line(const Contour<K>& c, std::size_t i, LineId line) {
+  return c.lines[i] == line || c.lines[i == 0 ? c.size() - 1 : i - 1] == line;
+}
+
 template <class K>
 struct Polygon {
   Contour<K> outer;

@@ -7,10 +7,12 @@ usage:
 Writes PATH.svg and PATH.png: on the left, seconds against input faces, log-log, for hlr draw
 (exact), Blender's Line Art and OCC's PolyAlgo, with a dashed line of slope 1 ("linear") through
 hlr's smallest assembly and the goal (1M faces in 10 s) as a star; on the right, microseconds
-per face, with hlr's goal band (within 2x of its figure at the smallest assembly). A run that
-timed out is drawn as an open marker at its time limit, with an arrow up (the time is longer);
-OCC runs skipped after a timeout are not drawn. One series per tool and view (the view is named
-when the CSV has more than one).
+per face, with hlr's goal band (within 2x of its figure at the smallest assembly). OCC is drawn
+twice: PolyAlgo alone (occ_s, solid) and with the B-rep build it needs first (occ_build_s +
+occ_s, dotted); its time limit covers both, so a timed-out OCC run is an x at the limit on the
+dotted series ("> 300 s"), as is a timed-out hlr run on hlr's. OCC runs skipped after a timeout
+are not drawn. One series per tool and view (the view is named when the CSV has more than one).
+The SVG carries no date and fixed ids, so the same CSV gives the same file.
 
 needs: python3-matplotlib (apt-get install -y python3-matplotlib)
 """
@@ -21,12 +23,16 @@ import os
 import matplotlib
 
 matplotlib.use("Agg")
+matplotlib.rcParams["svg.hashsalt"] = "hlr-scaling"   # fixed ids: the same CSV, the same SVG
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib import ticker  # noqa: E402
 
-TOOLS = [  # label, time column, status test, timeout column, colour, marker
-    ("hlr draw (exact)", "hlr_s", "hlr_status", "hlr_timeout_s", "tab:blue", "o"),
-    ("Blender Line Art", "lineart_s", None, None, "tab:orange", "s"),
-    ("OCC HLRBRep_PolyAlgo", "occ_s", "occ_s", "occ_timeout_s", "tab:green", "^"),
+TOOLS = [  # label, time column(s) summed, status column, timeout column, colour, marker, style
+    ("hlr draw (exact)", ["hlr_s"], "hlr_status", "hlr_timeout_s", "tab:blue", "o", "-"),
+    ("Blender Line Art", ["lineart_s"], None, None, "tab:orange", "s", "-"),
+    ("OCC PolyAlgo", ["occ_s"], None, None, "tab:green", "^", "-"),
+    ("OCC B-rep build + PolyAlgo", ["occ_build_s", "occ_s"], "occ_s", "occ_timeout_s",
+     "tab:green", "^", ":"),
 ]
 
 
@@ -37,16 +43,16 @@ def num(text):
         return None
 
 
-def series(rows, col, status_col, timeout_col):
-    """(faces, seconds) of finished runs and (faces, limit) of timed-out ones."""
+def series(rows, cols, status_col, timeout_col):
+    """(faces, seconds summed over cols) of finished runs and (faces, limit) of timed-out ones."""
     done, timed_out = [], []
     for r in rows:
         faces = num(r["faces"])
-        s = num(r[col])
+        parts = [num(r.get(c)) for c in cols]
         if faces is None:
             continue
-        if s is not None:
-            done.append((faces, s))
+        if all(p is not None for p in parts):
+            done.append((faces, sum(parts)))
         elif status_col and r.get(status_col) == "timeout" and num(r.get(timeout_col)):
             timed_out.append((faces, num(r[timeout_col])))
     return sorted(done), sorted(timed_out)
@@ -62,27 +68,27 @@ def main():
 
     rows = list(csv.DictReader(open(a.csv)))
     views = sorted({r["view"] for r in rows})
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4.6))
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 5.4))
     for view in views:
         vrows = [r for r in rows if r["view"] == view]
         suffix = (", %s" % view) if len(views) > 1 else ""
-        for label, col, status_col, timeout_col, colour, marker in TOOLS:
-            done, timed_out = series(vrows, col, status_col, timeout_col)
+        for label, cols, status_col, timeout_col, colour, marker, style in TOOLS:
+            done, timed_out = series(vrows, cols, status_col, timeout_col)
+            fill = "none" if style != "-" else colour
             if done:
-                xs, ys = zip(*done)
-                ax.plot(xs, ys, marker=marker, color=colour, label=label + suffix)
-                ax2.plot(xs, [1e6 * y / x for x, y in done], marker=marker, color=colour,
-                         label=label + suffix)
+                xs, secs = zip(*done)
+                us = [1e6 * y / x for x, y in done]
+                for axis, ys in ((ax, secs), (ax2, us)):
+                    axis.plot(xs, ys, marker=marker, markerfacecolor=fill, color=colour,
+                              linestyle=style, label=label + suffix if axis is ax else None)
             for x, limit in timed_out:
-                ax.plot([x], [limit], marker=marker, color=colour, markerfacecolor="none",
-                        linestyle="none", label="%s: timed out at %g s%s" % (label, limit, suffix))
-                ax.annotate("", xy=(x, limit * 1.8), xytext=(x, limit),
-                            arrowprops=dict(arrowstyle="->", color=colour))
-                ax2.plot([x], [1e6 * limit / x], marker=marker, color=colour,
-                         markerfacecolor="none", linestyle="none")
-                ax2.annotate("", xy=(x, 1.8e6 * limit / x), xytext=(x, 1e6 * limit / x),
-                             arrowprops=dict(arrowstyle="->", color=colour))
-        hlr_done, _ = series(vrows, "hlr_s", "hlr_status", "hlr_timeout_s")
+                for axis, y in ((ax, limit), (ax2, 1e6 * limit / x)):
+                    axis.plot([x], [y], marker="x", color=colour, markersize=8, linestyle="none",
+                              label="%s: over %g s (timeout)%s" % (label, limit, suffix)
+                              if axis is ax else None)
+                    axis.annotate("> %g s" % limit, xy=(x, y), xytext=(-40, -13),
+                                  textcoords="offset points", fontsize=7.5, color=colour)
+        hlr_done, _ = series(vrows, ["hlr_s"], "hlr_status", "hlr_timeout_s")
         if hlr_done:
             x0, y0 = hlr_done[0]
             xmax = max(num(r["faces"]) for r in vrows)
@@ -96,21 +102,29 @@ def main():
     for axis in (ax, ax2):
         axis.set_xscale("log")
         axis.set_yscale("log")
+        axis.yaxis.set_major_locator(ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
+        axis.yaxis.set_major_formatter(ticker.FuncFormatter(lambda v, _: "%g" % v))
+        axis.yaxis.set_minor_formatter(ticker.NullFormatter())
         axis.set_xlabel("input faces (assembly)")
         axis.grid(True, which="both", alpha=0.3)
     ax.set_ylabel("seconds (1 view)")
     ax2.set_ylabel("microseconds per face")
     ax.set_title("time against faces")
     ax2.set_title("time per face")
-    ax.legend(fontsize=7.5, loc="upper left")
-    ax2.legend(fontsize=7.5, loc="best")
+    handles, labels = [], []
+    for axis in (ax, ax2):
+        h, l = axis.get_legend_handles_labels()
+        handles += h
+        labels += l
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8, frameon=False)
     if a.label:
         fig.suptitle(a.label, fontsize=10)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.17, 1, 1))
     os.makedirs(os.path.dirname(os.path.abspath(a.images)), exist_ok=True)
     for ext in ("svg", "png"):
-        fig.savefig("%s.%s" % (a.images, ext), dpi=110)
-        print("wrote %s.%s" % (a.images, ext))
+        fig.savefig("%s.%s" % (a.images, ext), dpi=110,
+                    metadata={"Date": None} if ext == "svg" else None)
+        print("wrote %s.%s" % (os.path.normpath(a.images), ext))
 
 
 if __name__ == "__main__":

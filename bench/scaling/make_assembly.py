@@ -183,7 +183,6 @@ def main():
     cells = list(itertools.product(*(range(d) for d in dims)))
     rng.shuffle(cells)
     rots = rotations()
-    one = 1 << UNIT_BITS                                    # one part size in units u
     step = int(round(a.spacing * 1024)) << (UNIT_BITS - 10)  # exact: spacing is k / 1024
     jit_unit = 1 << (UNIT_BITS - JITTER_BITS)
     jit_max = int(JITTER_MAX * (1 << JITTER_BITS))

@@ -62,7 +62,8 @@ std::vector<Interval> interior_intervals(const Mesh& mesh, const std::vector<std
   auto edge = [](const clip::Contour<EK>& c, std::size_t i) {
     return std::pair<const EK::Point_2&, const EK::Point_2&>(c.points[i], c.points[(i + 1) % c.size()]);
   };
-  return detail::inside_intervals(line, polygon, edge, false, false);
+  detail::PlainParams<EK, decltype(edge)> params{line, edge};
+  return detail::inside_intervals(line, polygon, params, false, false);
 }
 
 // Whether face g has corners strictly on both sides of the plane of face f. Corners g shares with f

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <hlr/hidden_line/lines.hpp>
+#include <hlr/kernel/mesh_edges.hpp>
 
 #include "box_index.hpp"
 
@@ -23,6 +24,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <unordered_map>
 
 namespace hlr::hidden_line {
 namespace detail {
@@ -52,10 +55,24 @@ struct ImageLine {
   CGAL::Bbox_2 bbox() const { return G::bbox(a) + G::bbox(b); }
 };
 
-// Something that may cover a line over [lo, hi], f(t) = f0 + t (f1 - f0) nearer than the line.
+// Something that may cover a line over [lo, hi], with the depth difference f(t) = f0 + t (f1 - f0)
+// (nearer than the line where positive), kept as the signs of f0 and f1 and, where they differ
+// strictly, the zero t0 of f. Occluders of one plane share these.
+template <class K>
+struct Depth {
+  int sign0 = 0, sign1 = 0;
+  typename Geometry<K>::FT t0;  // only where sign0 * sign1 < 0
+  bool crosses() const { return sign0 * sign1 < 0; }
+  // Whether f > 0 at t in (0, 1), t != t0.
+  bool nearer_at(const typename Geometry<K>::FT& t) const {
+    if (!crosses()) return sign0 > 0 || sign1 > 0;
+    return t < t0 ? sign0 > 0 : sign1 > 0;
+  }
+};
 template <class K>
 struct Occluder {
-  typename Geometry<K>::FT lo, hi, f0, f1;
+  typename Geometry<K>::FT lo, hi;
+  const Depth<K>* depth;
 };
 
 template <class FT>
@@ -64,20 +81,35 @@ void sort_unique(std::vector<FT>& ts) {
   ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
 }
 
+// Parameters of points on a line, constructed plainly: a corner by its coordinate along the line,
+// a crossing from the two points of the crossing edge's support line, which `edge_line(contour, i)`
+// gives (rule 3: the support line, not the constructed edge).
+template <class K, class EdgeLine>
+struct PlainParams {
+  using G = Geometry<K>;
+  using FT = typename G::FT;
+  const ImageLine<K>& line;
+  EdgeLine edge_line;
+  bool on_line(const clip::Contour<K>&, std::size_t) const { return false; }
+  FT corner(const clip::Contour<K>& c, std::size_t i, const std::vector<int>&) { return line.param(c.points[i]); }
+  FT crossing(const clip::Contour<K>& c, std::size_t i) {
+    const auto [c0, c1] = edge_line(c, i);
+    return line.param_of_crossing(c0, c1);
+  }
+};
+
 // The t-intervals where the line runs inside the polygon: in its closure (`closed`) or in its
 // interior, joined where they meet, and with `unit` only within [0, 1]. They are bounded by the
 // polygon's corners on the line and by the line's crossings with the line each crossing edge lies
-// on, which `edge_line(contour, i)` gives as two points (the support line, for rule 3).
-template <class K, class EdgeLine>
+// on; `params` constructs those parameters (PlainParams, or the classifier's shared ones) and may
+// know corners on the line without arithmetic (`on_line`).
+template <class K, class Params>
 std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> inside_intervals(
-    const ImageLine<K>& line, const clip::Polygon<K>& polygon, EdgeLine&& edge_line, bool closed, bool unit) {
+    const ImageLine<K>& line, const clip::Polygon<K>& polygon, Params& params, bool closed, bool unit) {
   using G = Geometry<K>;
   using FT = typename G::FT;
   std::vector<FT> ts;
   if (unit) ts = {FT(0), FT(1)};
-  auto add = [&](const FT& t) {
-    if (!unit || (FT(0) < t && t < FT(1))) ts.push_back(t);
-  };
   // With `unit`, parameters outside (0, 1) are known from predicates before any is constructed: a
   // corner on the line lies strictly between a and b along the line's main axis, a crossing exactly
   // when a and b lie strictly on opposite sides of the crossing edge's support line.
@@ -90,15 +122,15 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   auto scan = [&](const clip::Contour<K>& c) {
     const std::size_t n = c.size();
     side.resize(n);
-    for (std::size_t i = 0; i < n; ++i) side[i] = G::orientation(line.a, line.b, c.points[i]);
+    for (std::size_t i = 0; i < n; ++i) side[i] = params.on_line(c, i) ? 0 : G::orientation(line.a, line.b, c.points[i]);
     for (std::size_t i = 0; i < n; ++i) {
       const int op = side[i], oq = side[(i + 1) % n];
       if (op == 0) {
-        if (!unit || between(c.points[i])) add(line.param(c.points[i]));
+        if (!unit || between(c.points[i])) ts.push_back(params.corner(c, i, side));
       } else if (oq != 0 && op != oq) {
-        const auto [c0, c1] = edge_line(c, i);
+        const auto [c0, c1] = params.edge_line(c, i);
         if (!unit || G::orientation(c0, c1, line.a) * G::orientation(c0, c1, line.b) < 0)
-          add(line.param_of_crossing(c0, c1));
+          ts.push_back(params.crossing(c, i));
       }
     }
   };
@@ -130,6 +162,17 @@ class Classifier {
     for (std::size_t m = 0; m < meshes.size(); ++m) source_of_face_[m].assign(meshes[m].faces.size(), -1);
     for (std::size_t s = 0; s < sources.polygons.size(); ++s)
       for (std::uint32_t f : sources.polygons[s].faces) source_of_face_[sources.polygons[s].mesh][f] = std::int32_t(s);
+    // The sources through each mesh vertex: their planes contain it exactly.
+    sources_at_vertex_.resize(meshes.size());
+    for (std::size_t m = 0; m < meshes.size(); ++m) sources_at_vertex_[m].resize(meshes[m].vertices.size());
+    for (std::size_t s = 0; s < sources.polygons.size(); ++s) {
+      const auto& sp = sources.polygons[s];
+      for (std::uint32_t f : sp.faces)
+        for (std::uint32_t v : meshes[sp.mesh].faces[f]) {
+          auto& at = sources_at_vertex_[sp.mesh][v];
+          if (at.empty() || at.back() != std::int32_t(s)) at.push_back(std::int32_t(s));  // sources come in order
+        }
+    }
     for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid_.insert(i, polygon_bbox(map.visible[i].polygon));
     for (std::uint32_t i = 0; i < sources.edge_on_faces.size(); ++i) {
       const auto [m, f] = sources.edge_on_faces[i];
@@ -141,33 +184,134 @@ class Classifier {
 
   const ViewPoint<K>& view_point(std::uint32_t mesh, std::uint32_t v) const { return view_points_[mesh][v]; }
   std::int32_t source_of_face(std::uint32_t mesh, std::uint32_t face) const { return source_of_face_[mesh][face]; }
+  // The support line of a mesh edge, or kNoLine when no source has it.
+  clip::LineId line_of_edge(std::uint32_t mesh, std::uint32_t v0, std::uint32_t v1) const {
+    const auto& lines = sources_.edge_lines[mesh];
+    const std::uint64_t key = edge_key(v0, v1);
+    auto it = std::lower_bound(lines.begin(), lines.end(), key, [](const auto& e, std::uint64_t k) { return e.first < k; });
+    return it != lines.end() && it->first == key ? it->second : kNoLine;
+  }
+
+  static constexpr clip::LineId kNoLine = ~clip::LineId(0);
+  static constexpr std::uint32_t kNoVertex = ~std::uint32_t(0);
+
+  // The line to classify: its ends in view coordinates and projected, and what is known of it
+  // without arithmetic: the support line it is (a mesh edge's), and its ends' mesh vertices.
+  struct Query {
+    const ViewPoint<K>&a, &b;
+    P pa, pb;
+    clip::LineId line = kNoLine;
+    std::uint32_t mesh = 0, v0 = kNoVertex, v1 = kNoVertex;
+  };
+  Query mesh_edge(std::uint32_t mesh, std::uint32_t v0, std::uint32_t v1) const {
+    const auto& images = sources_.image_points[mesh];
+    return {view_points_[mesh][v0], view_points_[mesh][v1], images[v0], images[v1], line_of_edge(mesh, v0, v1), mesh, v0, v1};
+  }
+  static Query constructed(const ViewPoint<K>& a, const ViewPoint<K>& b) {
+    return {a, b, G::point(a.x, a.y), G::point(b.x, b.y)};
+  }
+
+  // Parameters along the line being classified, one per support line it crosses: the fragments
+  // that share an edge or a corner on that support line get the same number, so the exact ties
+  // between them are decided by identity, not by exact arithmetic.
+  struct SharedParams {
+    const ImageLine<K>* line = nullptr;
+    const clip::LineTable<K>* lines = nullptr;
+    clip::LineId own = kNoLine;
+    std::unordered_map<clip::LineId, FT> by_line;
+    std::unordered_map<std::uintptr_t, FT> by_point;  // by G::identity of corners on the line
+
+    bool on_line(const clip::Contour<K>& c, std::size_t i) const {
+      if constexpr (G::exact_constructions) return own != kNoLine && clip::corner_on_line(c, i, own);
+      else return false;
+    }
+    std::pair<const P&, const P&> edge_line(const clip::Contour<K>& c, std::size_t i) const {
+      const auto& l = (*lines)[c.lines[i]];
+      return {l.a, l.b};
+    }
+    FT crossing(const clip::Contour<K>& c, std::size_t i) { return crossing_of(c.lines[i]); }
+    // A corner on the line where an edge from a corner off the line arrives or leaves is where
+    // that edge's support line crosses the line (rule 3: the corner lies on it).
+    // One corner shared by several fragments (a mesh vertex on the line) is reached by different
+    // edges in each, so it is also looked up by identity.
+    FT corner(const clip::Contour<K>& c, std::size_t i, const std::vector<int>& side) {
+      if constexpr (!G::exact_constructions) return line->param(c.points[i]);  // rounded points: as they are
+      const std::uintptr_t id = G::identity(c.points[i]);
+      if (id != 0)
+        if (auto it = by_point.find(id); it != by_point.end()) return it->second;
+      const std::size_t n = c.size(), prev = i == 0 ? n - 1 : i - 1, next = i + 1 == n ? 0 : i + 1;
+      const FT t = side[prev] != 0 ? crossing_of(c.lines[prev])
+                   : side[next] != 0 ? crossing_of(c.lines[i])
+                                     : line->param(c.points[i]);
+      if (id != 0) by_point.emplace(id, t);
+      return t;
+    }
+    FT crossing_of(clip::LineId id) {
+      auto [it, added] = by_line.try_emplace(id);
+      if (added) {
+        const auto& l = (*lines)[id];
+        it->second = line->param_of_crossing(l.a, l.b);
+      }
+      return it->second;
+    }
+  };
 
   // What one thread needs to classify lines; the classifier itself is shared and read only.
   struct Scratch {
     std::vector<Occluder<K>> occluders;
+    SharedParams params;
+    std::unordered_map<std::uint32_t, Depth<K>> by_source;  // the line against each source's plane
+    std::deque<Depth<K>> edge_on;                           // against faces seen edge-on
   };
 
   // Splits the line into pieces; `own` are the sources whose plane contains the line (they never
   // lie strictly nearer), sorted.
-  std::vector<LinePiece<K>> classify(const ViewPoint<K>& a, const ViewPoint<K>& b, const std::vector<std::int32_t>& own,
-                                     Scratch& scratch) const {
-    const P pa = G::point(a.x, a.y), pb = G::point(b.x, b.y);
+  std::vector<LinePiece<K>> classify(const Query& q, const std::vector<std::int32_t>& own, Scratch& scratch) const {
+    const ViewPoint<K>&a = q.a, &b = q.b;
+    const P &pa = q.pa, &pb = q.pb;
     if (G::equal(pa, pb)) return {};
     const ImageLine<K> line(pa, pb);
     auto& occluders_ = scratch.occluders;
     occluders_.clear();
+    auto& params = scratch.params;
+    params.line = &line;
+    params.lines = &sources_.lines;
+    params.own = q.line;
+    params.by_line.clear();
+    params.by_point.clear();
+    scratch.by_source.clear();
+    scratch.edge_on.clear();
+    // A mesh vertex lies exactly in the plane of every source through it.
+    auto in_plane = [&](std::uint32_t v, std::int32_t source) {
+      if (v == kNoVertex) return false;
+      const auto& at = sources_at_vertex_[q.mesh][v];
+      return std::binary_search(at.begin(), at.end(), source);
+    };
+    // The line against the plane of a source, once per source.
+    auto depth_of_source = [&](std::uint32_t source) -> const Depth<K>& {
+      auto [it, added] = scratch.by_source.try_emplace(source);
+      if (added) {
+        const DepthPlane<K>& plane = sources_.polygons[source].plane;
+        auto f = [&](const ViewPoint<K>& p) { return plane.a * p.x + plane.b * p.y + plane.c - p.z; };
+        Depth<K>& d = it->second;
+        d.sign0 = in_plane(q.v0, std::int32_t(source)) ? 0 : G::sign_above(plane.a, plane.b, plane.c, a.x, a.y, a.z);
+        d.sign1 = in_plane(q.v1, std::int32_t(source)) ? 0 : G::sign_above(plane.a, plane.b, plane.c, b.x, b.y, b.z);
+        if (d.crosses()) {
+          const FT f0 = f(a), f1 = f(b);
+          d.t0 = f0 / (f0 - f1);
+        }
+      }
+      return it->second;
+    };
 
     grid_.query(line.bbox(), [&](std::uint32_t i) {
       const Fragment<K>& frag = map_.visible[i];
       if (std::binary_search(own.begin(), own.end(), std::int32_t(frag.source))) return;
-      const DepthPlane<K>& plane = sources_.polygons[frag.source].plane;
+      const Depth<K>& depth = depth_of_source(frag.source);
       // Never strictly nearer along the line (the depth difference is linear in t).
-      if (G::sign_above(plane.a, plane.b, plane.c, a.x, a.y, a.z) <= 0 &&
-          G::sign_above(plane.a, plane.b, plane.c, b.x, b.y, b.z) <= 0)
-        return;
-      const FT f0 = plane.a * G::x(pa) + plane.b * G::y(pa) + plane.c - a.z;
-      const FT f1 = plane.a * G::x(pb) + plane.b * G::y(pb) + plane.c - b.z;
-      for (const auto& [lo, hi] : closure_intervals(line, frag.polygon)) occluders_.push_back({lo, hi, f0, f1});
+      if (depth.sign0 <= 0 && depth.sign1 <= 0) return;
+      for (const auto& [lo, hi] : inside_intervals(line, frag.polygon, params, true, true))
+        occluders_.push_back({lo, hi, &depth});
     });
 
     edge_on_grid_.query(line.bbox(), [&](std::uint32_t i) {
@@ -176,8 +320,9 @@ class Classifier {
       for (std::uint32_t v : face)
         if (G::orientation(pa, pb, image(m, v)) != 0) return;  // meets the line in one point at most
       for (std::size_t k = 0; k < face.size(); ++k) {
-        const ViewPoint<K>&u = view_points_[m][face[k]], &w = view_points_[m][face[(k + 1) % face.size()]];
-        const P pu = G::point(u.x, u.y), pw = G::point(w.x, w.y);
+        const std::uint32_t vu = face[k], vw = face[(k + 1) % face.size()];
+        const ViewPoint<K>&u = view_points_[m][vu], &w = view_points_[m][vw];
+        const P &pu = image(m, vu), &pw = image(m, vw);
         if (G::equal(pu, pw)) continue;  // an edge along the view direction covers one point
         const FT tu = line.param(pu), tw = line.param(pw);
         FT lo = std::min(tu, tw), hi = std::max(tu, tw);
@@ -188,7 +333,11 @@ class Classifier {
         const FT slope = (w.z - u.z) / (tw - tu);
         const FT f0 = u.z - tu * slope - a.z;
         const FT f1 = u.z + (FT(1) - tu) * slope - b.z;
-        occluders_.push_back({lo, hi, f0, f1});
+        Depth<K>& d = scratch.edge_on.emplace_back();
+        d.sign0 = G::sign(f0);
+        d.sign1 = G::sign(f1);
+        if (d.crosses()) d.t0 = f0 / (f0 - f1);
+        occluders_.push_back({lo, hi, &d});
       }
     });
 
@@ -197,10 +346,7 @@ class Classifier {
     for (const auto& o : occluders_) {
       ts.push_back(o.lo);
       ts.push_back(o.hi);
-      if (G::sign(o.f0) * G::sign(o.f1) < 0) {
-        const FT t = o.f0 / (o.f0 - o.f1);
-        if (o.lo < t && t < o.hi) ts.push_back(t);
-      }
+      if (o.depth->crosses() && o.lo < o.depth->t0 && o.depth->t0 < o.hi) ts.push_back(o.depth->t0);
     }
     sort_unique(ts);
     std::vector<LinePiece<K>> pieces;
@@ -208,7 +354,7 @@ class Classifier {
       const FT mid = (ts[i] + ts[i + 1]) / 2;
       bool hidden = false;
       for (const auto& o : occluders_)
-        if (o.lo < mid && mid < o.hi && G::sign(o.f0 + mid * (o.f1 - o.f0)) > 0) {
+        if (o.lo < mid && mid < o.hi && o.depth->nearer_at(mid)) {
           hidden = true;
           break;
         }
@@ -229,25 +375,14 @@ class Classifier {
     for (const auto& frag : map.visible) box += polygon_bbox(frag.polygon);
     return box;
   }
-  P image(std::uint32_t mesh, std::uint32_t v) const {
-    const auto& q = view_points_[mesh][v];
-    return G::point(q.x, q.y);
-  }
-
-  // The closed t-intervals, within [0, 1], where the line runs in the closure of the polygon.
-  std::vector<std::pair<FT, FT>> closure_intervals(const ImageLine<K>& line, const clip::Polygon<K>& polygon) const {
-    auto support = [&](const clip::Contour<K>& c, std::size_t i) {
-      const auto& l = sources_.lines[c.lines[i]];  // rule 3: the support line, not the constructed edge
-      return std::pair<const P&, const P&>(l.a, l.b);
-    };
-    return inside_intervals(line, polygon, support, true, true);
-  }
+  const P& image(std::uint32_t mesh, std::uint32_t v) const { return sources_.image_points[mesh][v]; }
 
   const std::vector<Mesh>& meshes_;
   const Sources<K>& sources_;
   const VisibilityMap<K>& map_;
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
+  std::vector<std::vector<std::vector<std::int32_t>>> sources_at_vertex_;  // per mesh, per vertex, sorted
   LooseGrid grid_, edge_on_grid_;
 };
 
@@ -307,7 +442,9 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
     auto& mine = scratch.local();
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       FeatureLine<K>& line = out.lines[i];
-      line.pieces = classifier.classify(line.a, line.b, owns[i], mine);
+      const auto query = line.kind == FeatureKind::intersection ? classifier.constructed(line.a, line.b)
+                                                                : classifier.mesh_edge(line.mesh, line.v0, line.v1);
+      line.pieces = classifier.classify(query, owns[i], mine);
     }
   });
   for (const auto& line : out.lines) {

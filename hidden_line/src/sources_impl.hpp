@@ -104,6 +104,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
 
     // One support line per mesh edge.
     std::vector<clip::LineId> edge_line(topo.uses.size());
+    auto& edge_lines = out.edge_lines.emplace_back();
     for (std::size_t i = 0; i < topo.uses.size(); ++i) {
       if (i > 0 && topo.uses[i].key == topo.uses[i - 1].key) {
         edge_line[i] = edge_line[i - 1];
@@ -111,6 +112,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       }
       const std::uint32_t v0 = std::uint32_t(topo.uses[i].key >> 32), v1 = std::uint32_t(topo.uses[i].key);
       edge_line[i] = static_cast<clip::LineId>(out.lines.size());
+      edge_lines.emplace_back(topo.uses[i].key, edge_line[i]);
       out.lines.push_back({p2[v0], p2[v1]});
       LineOrigin origin;
       origin.kind = LineOrigin::mesh_edge;
@@ -216,6 +218,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       }
     }
     out.view_points.push_back(std::move(vp));
+    out.image_points.push_back(std::move(p2));
   }
   out.stats.sources = out.polygons.size();
   return out;

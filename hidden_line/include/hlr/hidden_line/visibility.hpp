@@ -68,6 +68,10 @@ struct Sources {
   std::vector<LineOrigin> line_origins;  // parallel to lines
   std::vector<std::array<std::uint32_t, 2>> edge_on_faces;  // (mesh, face) of the faces dropped edge-on
   std::vector<std::vector<ViewPoint<K>>> view_points;        // per mesh, per input vertex
+  std::vector<std::vector<typename Geometry<K>::Point>> image_points;  // the same, projected: the
+                                                             // points every source corner shares
+  // Per mesh, (edge_key(v0, v1), line) for every mesh edge's support line, sorted by key.
+  std::vector<std::vector<std::pair<std::uint64_t, clip::LineId>>> edge_lines;
   SourceStats stats;
 };
 

@@ -89,6 +89,7 @@ struct CgalGeometry {
   // decide almost every case without CGAL's filter machinery; ties go to CGAL's exact predicate.
   static int compare_x(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
+      if (CGAL::identical(a, b)) return 0;
       const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
       if (c != 2) return c;
     }
@@ -96,6 +97,7 @@ struct CgalGeometry {
   }
   static int compare_y(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
+      if (CGAL::identical(a, b)) return 0;
       const int c = compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y());
       if (c != 2) return c;
     }
@@ -103,6 +105,7 @@ struct CgalGeometry {
   }
   static int compare_xy(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
+      if (CGAL::identical(a, b)) return 0;
       const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
       if (c == -1 || c == 1) return c;
       if (c == 0) {
@@ -141,6 +144,12 @@ struct CgalGeometry {
   }
   static Point midpoint(const Point& a, const Point& b) { return CGAL::midpoint(a, b); }
 
+  // A key shared exactly by copies of one point (on the exact kernel, its representation): equal
+  // keys mean equal points without arithmetic. 0 on kernels whose points are plain values.
+  static std::uintptr_t identity(const Point& p) {
+    if constexpr (exact_constructions) return static_cast<std::uintptr_t>(p.id());
+    else return 0;
+  }
   static FT x(const Point& p) { return p.x(); }
   static FT y(const Point& p) { return p.y(); }
   // sign(a x + b y + c - z): where a plane z = a x + b y + c lies against depth z at (x, y). Decided
@@ -209,6 +218,7 @@ struct Geometry<DoubleKernel> {
     return {a.x + t * rx, a.y + t * ry};
   }
   static Point midpoint(const Point& a, const Point& b) { return {(a.x + b.x) / 2, (a.y + b.y) / 2}; }
+  static std::uintptr_t identity(const Point&) { return 0; }
   static double x(const Point& p) { return p.x; }
   static double y(const Point& p) { return p.y; }
   static int sign_above(double a, double b, double c, double px, double py, double z) {

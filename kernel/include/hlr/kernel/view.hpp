@@ -84,6 +84,8 @@ class ViewFrame {
     for (int i = 0; i < 3; ++i) z_[i] = -d[i];
     for (int i = 0; i < 3; ++i) {
       const FT* axis = i == 0 ? x_ : i == 1 ? y_ : z_;
+      for (int k = 0; k < 3; ++k)
+        coefficient_[i][k] = CGAL::is_zero(axis[k]) ? 0 : axis[k] == FT(1) ? 1 : axis[k] == FT(-1) ? -1 : 2;
       double sq = 0;
       for (int k = 0; k < 3; ++k) sq += CGAL::to_double(axis[k]) * CGAL::to_double(axis[k]);
       scale_[i] = std::sqrt(sq);
@@ -94,7 +96,7 @@ class ViewFrame {
   // A model-space point given in the kernel's number type (a constructed point, on ExactKernel).
   ViewPoint<K> to_view(const FT& px, const FT& py, const FT& pz) const {
     const FT q[3] = {px, py, pz};
-    return {dot(x_, q), dot(y_, q), dot(z_, q)};
+    return {dot(0, q), dot(1, q), dot(2, q)};
   }
 
   // |X|, |Y|, |Z| in double: divide a view coordinate by these to get model units.
@@ -122,10 +124,24 @@ class ViewFrame {
     out[1] = a[2] * b[0] - a[0] * b[2];
     out[2] = a[0] * b[1] - a[1] * b[0];
   }
-  static FT dot(const FT a[3], const FT b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  // X·q, Y·q or Z·q. Terms with a basis coefficient of 0 are left out and coefficients of ±1 are
+  // not multiplied (named views have small integer bases): the same exact number as a smaller
+  // expression, whose exact evaluation, when a predicate needs one, costs less.
+  FT dot(int axis, const FT q[3]) const {
+    const FT* a = axis == 0 ? x_ : axis == 1 ? y_ : z_;
+    std::optional<FT> sum;
+    for (int k = 0; k < 3; ++k) {
+      const int c = coefficient_[axis][k];
+      if (c == 0) continue;
+      const FT term = c == 1 ? q[k] : c == -1 ? -q[k] : a[k] * q[k];
+      sum = sum ? *sum + term : term;
+    }
+    return sum ? *sum : FT(0);
+  }
 
   View view_;
   FT x_[3], y_[3], z_[3];
+  int coefficient_[3][3];  // per axis and component: 0, 1 or -1 when the coefficient is that, else 2
   double scale_[3];
 };
 

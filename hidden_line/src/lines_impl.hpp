@@ -246,6 +246,17 @@ class Classifier {
       if (id != 0) by_point.emplace(id, t);
       return t;
     }
+    // The parameter of any point on the line: the line's own ends are 0 and 1 exactly.
+    FT at_point(const P& p) {
+      if (G::identity(p) != 0) {
+        if (G::identity(p) == G::identity(line->a)) return FT(0);
+        if (G::identity(p) == G::identity(line->b)) return FT(1);
+        auto [it, added] = by_point.try_emplace(G::identity(p));
+        if (added) it->second = line->param(p);
+        return it->second;
+      }
+      return line->param(p);
+    }
     FT crossing_of(clip::LineId id) {
       auto [it, added] = by_line.try_emplace(id);
       if (added) {
@@ -324,7 +335,7 @@ class Classifier {
         const ViewPoint<K>&u = view_points_[m][vu], &w = view_points_[m][vw];
         const P &pu = image(m, vu), &pw = image(m, vw);
         if (G::equal(pu, pw)) continue;  // an edge along the view direction covers one point
-        const FT tu = line.param(pu), tw = line.param(pw);
+        const FT tu = params.at_point(pu), tw = params.at_point(pw);
         FT lo = std::min(tu, tw), hi = std::max(tu, tw);
         if (hi <= FT(0) || lo >= FT(1)) continue;
         lo = std::max(lo, FT(0));
@@ -460,47 +471,61 @@ template <class K>
 std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
   using G = Geometry<K>;
   using FT = typename G::FT;
-  using P = typename G::Point;
   struct Span {
-    detail::ImageLine<K> line;
+    std::uint32_t line;
     FT t0, t1;
     bool visible;
-    std::uint32_t mesh;
-    double meeting_degrees;
   };
+  std::vector<detail::ImageLine<K>> images;
+  images.reserve(lines.lines.size());
   std::vector<Span> spans;
   CGAL::Bbox_2 domain;
+  for (const auto& l : lines.lines) {
+    images.emplace_back(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y));
+    if (!l.pieces.empty()) domain += images.back().bbox();
+  }
   for (bool visible : {true, false})
-    for (const auto& l : lines.lines) {
-      if (l.pieces.empty()) continue;
-      const detail::ImageLine<K> image(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y));
-      domain += image.bbox();
-      for (const auto& p : l.pieces)
-        if (p.visible == visible) spans.push_back({image, p.t0, p.t1, visible, l.mesh, l.meeting_degrees});
-    }
+    for (std::uint32_t i = 0; i < lines.lines.size(); ++i)
+      for (const auto& p : lines.lines[i].pieces)
+        if (p.visible == visible) spans.push_back({i, p.t0, p.t1, visible});
 
   // Visible spans first, then hidden ones; each loses what earlier, collinear spans already draw.
+  // Collinearity is decided on the lines' own ends, and pieces of one line never overlap.
   std::vector<DrawnSegment<K>> out;
+  std::vector<Span> drawn;  // parallel to out
   detail::LooseGrid grid(domain, spans.size());
+  std::vector<std::int8_t> collinear(lines.lines.size(), -1);  // with the current span's line
+  std::vector<std::uint32_t> asked;
   for (const Span& span : spans) {
-    const P a = span.line.at(span.t0), b = span.line.at(span.t1);
+    const detail::ImageLine<K>& image = images[span.line];
+    const auto a = image.at(span.t0), b = image.at(span.t1);
     const CGAL::Bbox_2 box = G::bbox(a) + G::bbox(b);
     std::vector<std::pair<FT, FT>> covered;
+    for (std::uint32_t l : asked) collinear[l] = -1;
+    asked.clear();
     grid.query(box, [&](std::uint32_t i) {
-      const DrawnSegment<K>& d = out[i];
-      if (G::orientation(a, b, d.a) != 0 || G::orientation(a, b, d.b) != 0) return;
-      FT lo = span.line.param(d.a), hi = span.line.param(d.b);
+      const Span& d = drawn[i];
+      if (d.line == span.line) return;
+      if (collinear[d.line] < 0) {
+        const detail::ImageLine<K>& other = images[d.line];
+        collinear[d.line] = G::orientation(image.a, image.b, other.a) == 0 && G::orientation(image.a, image.b, other.b) == 0;
+        asked.push_back(d.line);
+      }
+      if (!collinear[d.line]) return;
+      FT lo = image.param(out[i].a), hi = image.param(out[i].b);
       if (hi < lo) std::swap(lo, hi);
       lo = std::max(lo, span.t0);
       hi = std::min(hi, span.t1);
       if (lo < hi) covered.emplace_back(lo, hi);
     });
     std::sort(covered.begin(), covered.end());
+    const FeatureLine<K>& line = lines.lines[span.line];
     FT from = span.t0;
     auto emit = [&](const FT& t0, const FT& t1) {
-      const DrawnSegment<K> d{span.line.at(t0), span.line.at(t1), span.visible, span.mesh, span.meeting_degrees};
+      const DrawnSegment<K> d{image.at(t0), image.at(t1), span.visible, line.mesh, line.meeting_degrees};
       grid.insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
       out.push_back(d);
+      drawn.push_back({span.line, t0, t1, span.visible});
     };
     for (const auto& [lo, hi] : covered) {
       if (from < lo) emit(from, lo);

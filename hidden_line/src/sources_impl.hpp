@@ -3,7 +3,7 @@
 // Which faces are coplanar, which components are closed and consistently oriented, and which of
 // those are inward (wound clockwise seen from outside, as STL exporters with flipped normals write
 // them), are facts of the model, decided once in model space with exact arithmetic on the input
-// doubles, whatever the kernel; so the same faces are consolidated and culled in every view, and a
+// doubles (Epick's predicates, which are exact on them), whatever the kernel; so the same faces are consolidated and culled in every view, and a
 // mesh with every face reversed gives the same sources. Facing and
 // everything after it is decided in view space on kernel K.
 #pragma once
@@ -11,7 +11,7 @@
 #include <hlr/hidden_line/visibility.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <numeric>
@@ -29,12 +29,13 @@ struct MeshTopology {
 };
 
 inline MeshTopology analyse_mesh(const Mesh& mesh) {
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  // Predicates only, on input doubles: exact with Epick, and without Epeck's lazy nodes.
+  using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
   const std::size_t nf = mesh.faces.size();
   MeshTopology t;
   auto point = [&](std::uint32_t v) {
     const auto& p = mesh.vertices[v];
-    return EK::Point_3(p[0], p[1], p[2]);
+    return IK::Point_3(p[0], p[1], p[2]);
   };
   t.uses = edge_uses(mesh);
 
@@ -61,9 +62,9 @@ inline MeshTopology analyse_mesh(const Mesh& mesh) {
   UnionFind groups(nf);
   auto in_plane = [&](std::uint32_t f, std::uint32_t g) {
     const auto& pv = t.plane_vertices[f];
-    const EK::Point_3 a = point(pv[0]), b = point(pv[1]), c = point(pv[2]);
+    const IK::Point_3 a = point(pv[0]), b = point(pv[1]), c = point(pv[2]);
     for (std::uint32_t v : mesh.faces[g])
-      if (!CGAL::coplanar(a, b, c, point(v))) return false;
+      if (v != pv[0] && v != pv[1] && v != pv[2] && !CGAL::coplanar(a, b, c, point(v))) return false;
     return true;
   };
   for_each_edge(t.uses, [&](EdgeUses first, EdgeUses last) {

@@ -9,6 +9,8 @@ packages=(
   # libraries (DESIGN.md "Dependencies")
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libopenmesh-dev libglm-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+  # allocator of the hlr program (app/CMakeLists.txt): tcmalloc_minimal
+  libgoogle-perftools-dev
   # DXF and PNG writers (export/)
   libdxflib-dev libpng-dev
   # tests and benchmarks

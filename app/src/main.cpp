@@ -6,6 +6,7 @@
 #include "errors.hpp"
 #include "subcommand.hpp"
 
+#include <hlr/kernel/kernel.hpp>
 #include <hlr/kernel/scene.hpp>
 
 #include <CLI/CLI.hpp>
@@ -31,6 +32,19 @@ std::string one_line(std::string text) {
 int report(const std::string& message) {
   std::cerr << "hlr: " << one_line(message) << std::endl;
   return hlr::app::kExitInputError;
+}
+
+// With HLR_PREDICATE_STATS set: one line per predicate family of the exact kernel, how many
+// decisions took no arithmetic, intervals, or exact arithmetic (bench/predicates reads them).
+void print_predicate_stats() {
+  using hlr::PredicateStats;
+  if (!PredicateStats::enabled) return;
+  const char* families[] = {"orientation", "comparison", "sign"};
+  for (int f = 0; f < int(hlr::PredicateFamily::count); ++f) {
+    const auto& c = PredicateStats::counts[f];
+    std::cerr << "hlr: predicates " << families[f] << ": identity " << c[0].load() << ", interval " << c[1].load()
+              << ", exact " << c[2].load() << "\n";
+  }
 }
 
 }  // namespace
@@ -93,7 +107,9 @@ int main(int argc, char** argv) {
   for (const auto& command : commands) {
     if (!command.app->parsed()) continue;
     try {
-      return command.run();
+      const int status = command.run();
+      print_predicate_stats();
+      return status;
     } catch (const UserError& e) {
       return report(e.what());
     } catch (const hlr::ImportError& e) {

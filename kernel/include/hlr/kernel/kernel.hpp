@@ -12,7 +12,9 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -64,6 +66,19 @@ inline std::string exact_rational_string(const ExactKernel::FT& v) {
 // A double is a dyadic rational, written as such.
 inline std::string exact_string_of_double(double d) { return exact_rational_string(ExactKernel::FT(d)); }
 
+// How the exact kernel's predicates were decided, counted when the environment has
+// HLR_PREDICATE_STATS (hlr prints them on exit): without arithmetic (the same point twice), by
+// interval arithmetic on the approximations Epeck keeps, or by exact arithmetic.
+enum class PredicateFamily { orientation, comparison, sign, count };
+enum class DecidedBy { identity, interval, exact, count };
+struct PredicateStats {
+  static inline const bool enabled = std::getenv("HLR_PREDICATE_STATS") != nullptr;
+  static inline std::atomic<std::uint64_t> counts[int(PredicateFamily::count)][int(DecidedBy::count)] = {};
+  static void add(PredicateFamily f, DecidedBy d) {
+    if (enabled) counts[int(f)][int(d)].fetch_add(1, std::memory_order_relaxed);
+  }
+};
+
 // Signs are returned as int: -1, 0, +1.
 template <class K>
 struct Geometry;
@@ -76,42 +91,63 @@ struct CgalGeometry {
 
   static Point point(double x, double y) { return Point(x, y); }
   static Point point(const FT& x, const FT& y) requires(!std::is_same_v<FT, double>) { return Point(x, y); }
-  static int sign(const FT& v) { return static_cast<int>(CGAL::sign(v)); }
+  static int sign(const FT& v) {
+    if constexpr (exact_constructions)
+      if (PredicateStats::enabled) {
+        const auto i = CGAL::approx(v);
+        PredicateStats::add(PredicateFamily::sign, i.inf() > 0 || i.sup() < 0 || (i.inf() == 0 && i.sup() == 0)
+                                                       ? DecidedBy::interval
+                                                       : DecidedBy::exact);
+      }
+    return static_cast<int>(CGAL::sign(v));
+  }
   static int orientation(const Point& a, const Point& b, const Point& c) {
     // Two corners that are one shared Epeck point (a mesh vertex in two faces) make the
     // orientation 0: known without the interval filter, which cannot certify a zero and would
     // fall back to exact arithmetic.
-    if constexpr (exact_constructions)
-      if (CGAL::identical(a, b) || CGAL::identical(b, c) || CGAL::identical(a, c)) return 0;
+    if constexpr (exact_constructions) {
+      if (CGAL::identical(a, b) || CGAL::identical(b, c) || CGAL::identical(a, c)) {
+        PredicateStats::add(PredicateFamily::orientation, DecidedBy::identity);
+        return 0;
+      }
+      if (PredicateStats::enabled) {
+        CGAL::Protect_FPU_rounding<true> protect;
+        const auto o = CGAL::orientation(CGAL::approx(a), CGAL::approx(b), CGAL::approx(c));
+        PredicateStats::add(PredicateFamily::orientation, CGAL::is_certain(o) ? DecidedBy::interval : DecidedBy::exact);
+      }
+    }
     return static_cast<int>(CGAL::orientation(a, b, c));
   }
   // Comparisons first look at the interval approximations Epeck keeps with every point, which
   // decide almost every case without CGAL's filter machinery; ties go to CGAL's exact predicate.
   static int compare_x(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
-      if (CGAL::identical(a, b)) return 0;
+      if (CGAL::identical(a, b)) return counted(DecidedBy::identity, 0);
       const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
-      if (c != 2) return c;
+      if (c != 2) return counted(DecidedBy::interval, c);
+      PredicateStats::add(PredicateFamily::comparison, DecidedBy::exact);
     }
     return static_cast<int>(CGAL::compare_x(a, b));
   }
   static int compare_y(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
-      if (CGAL::identical(a, b)) return 0;
+      if (CGAL::identical(a, b)) return counted(DecidedBy::identity, 0);
       const int c = compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y());
-      if (c != 2) return c;
+      if (c != 2) return counted(DecidedBy::interval, c);
+      PredicateStats::add(PredicateFamily::comparison, DecidedBy::exact);
     }
     return static_cast<int>(CGAL::compare_y(a, b));
   }
   static int compare_xy(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
-      if (CGAL::identical(a, b)) return 0;
+      if (CGAL::identical(a, b)) return counted(DecidedBy::identity, 0);
       const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
-      if (c == -1 || c == 1) return c;
+      if (c == -1 || c == 1) return counted(DecidedBy::interval, c);
       if (c == 0) {
         const int d = compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y());
-        if (d != 2) return d;
+        if (d != 2) return counted(DecidedBy::interval, d);
       }
+      PredicateStats::add(PredicateFamily::comparison, DecidedBy::exact);
     }
     return static_cast<int>(CGAL::compare_xy(a, b));
   }
@@ -123,6 +159,10 @@ struct CgalGeometry {
         return false;
     }
     return a == b;
+  }
+  static int counted(DecidedBy by, int result) {
+    PredicateStats::add(PredicateFamily::comparison, by);
+    return result;
   }
   // -1 or +1 when the intervals are apart, 0 when both are the same single number, 2 otherwise.
   template <class Interval>
@@ -159,8 +199,10 @@ struct CgalGeometry {
       CGAL::Protect_FPU_rounding<true> protect;
       const auto v = CGAL::approx(a) * CGAL::approx(px) + CGAL::approx(b) * CGAL::approx(py) + CGAL::approx(c) -
                      CGAL::approx(z);
-      if (v.inf() > 0) return 1;
-      if (v.sup() < 0) return -1;
+      if (v.inf() > 0 || v.sup() < 0) {
+        PredicateStats::add(PredicateFamily::sign, DecidedBy::interval);
+        return v.inf() > 0 ? 1 : -1;
+      }
     }
     return sign(a * px + b * py + c - z);
   }

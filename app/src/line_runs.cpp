@@ -28,7 +28,8 @@ exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kin
   times.sources = seconds_since(mark);
   stage(settings, "sorting " + std::to_string(sources.polygons.size()) + " polygons");
   mark = std::chrono::steady_clock::now();
-  const hidden_line::VisibilityMap<K> map = hidden_line::area_sort<K>(sources);
+  // A drawing needs only the visible polygons: what the front pieces hide is not kept.
+  const hidden_line::VisibilityMap<K> map = hidden_line::area_sort<K>(sources, {.keep_hidden = false});
   times.sort = seconds_since(mark);
   stage(settings, "classifying feature lines");
   mark = std::chrono::steady_clock::now();

@@ -184,6 +184,7 @@ class Overlay {
   std::uint32_t target(std::uint32_t he) const { return (he & 1) ? graph_[he >> 1].lo : graph_[he >> 1].hi; }
 
   const LineTable<K>* lines_ = nullptr;
+  CrossingCache<K>* crossings_ = nullptr;
   std::vector<P> raw_;                 // input vertices, then constructed intersections
   std::vector<InputEdge> edges_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> splits_;  // (edge, raw point) on its interior
@@ -254,7 +255,8 @@ void Overlay<K>::test_pair(std::uint32_t i, std::uint32_t j) {
     const SupportLine<K>& l2 = (*lines_)[f.line];
     const std::uint32_t x = static_cast<std::uint32_t>(raw_.size());
     try {
-      raw_.push_back(G::line_intersection(l1.a, l1.b, l2.a, l2.b));
+      raw_.push_back(crossings_ ? crossings_->crossing(e.line, f.line, *lines_)
+                                : G::line_intersection(l1.a, l1.b, l2.a, l2.b));
     } catch (const std::runtime_error&) {
       // Exact predicates never call parallel lines crossing; rounded constructions can.
       throw ClipError("crossing edges lie on parallel lines");
@@ -544,6 +546,7 @@ ClipResult<K> Overlay<K>::run(const Polygon<K>& subject, const ClipRegion<K>& cl
   const auto& prepared = clip.prepared();
   const Polygon<K>& clip_polygon = clip.polygon();
   lines_ = prepared.lines;
+  crossings_ = prepared.crossings;
   ClipResult<K> result;
 
   const CGAL::Bbox_2 subject_box = contour_box(subject.outer);
@@ -615,15 +618,17 @@ template <class K>
 struct ClipRegion<K>::Prepared {
   Polygon<K> polygon;
   const LineTable<K>* lines;
+  CrossingCache<K>* crossings;
   CGAL::Bbox_2 box;
 };
 
 template <class K>
-ClipRegion<K>::ClipRegion(Polygon<K> polygon, const LineTable<K>& lines)
+ClipRegion<K>::ClipRegion(Polygon<K> polygon, const LineTable<K>& lines, CrossingCache<K>* crossings)
     : prepared_(std::make_unique<Prepared>()) {
   prepared_->box = detail::contour_box(polygon.outer);
   prepared_->polygon = std::move(polygon);
   prepared_->lines = &lines;
+  prepared_->crossings = crossings;
 }
 template <class K>
 ClipRegion<K>::~ClipRegion() = default;

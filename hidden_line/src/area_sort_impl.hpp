@@ -31,7 +31,7 @@ class AreaSort {
   enum class Relation { behind, ahead, coplanar, mixed };
 
  public:
-  explicit AreaSort(Sources<K>& sources) : src_(sources) {
+  AreaSort(Sources<K>& sources, const AreaSortOptions& options) : src_(sources), options_(options) {
     // Rough depth order: the nearest corner of each source, in double (only a heuristic).
     nearest_.resize(src_.polygons.size());
     for (std::size_t s = 0; s < src_.polygons.size(); ++s) {
@@ -167,9 +167,20 @@ class AreaSort {
     clip::Polygon<K> half_plane{std::move(half), {}};
     if (G::sign(clip::twice_signed_area(half_plane.outer)) <= 0)
       throw clip::ClipError("penetration cut is not a proper half-plane");
-    clip::ClipRegion<K> region(std::move(half_plane), src_.lines);
+    clip::ClipRegion<K> region(std::move(half_plane), src_.lines, crossings());
     auto parts = clip::clip_polygon(piece, region);
     return {std::move(parts.inside), std::move(parts.outside)};
+  }
+
+  // One point per crossing of two support lines, whichever clip finds it (exact kernel only: on
+  // the others a rounded crossing would depend on which clip came first).
+  clip::CrossingCache<K>* crossings() {
+    if constexpr (G::exact_constructions) return &crossings_;
+    else return nullptr;
+  }
+
+  void hide(Polygon piece, std::uint32_t s, std::uint32_t by) {
+    if (options_.keep_hidden) map_.hidden.push_back({std::move(piece), s, static_cast<std::int32_t>(by)});
   }
 
   // Places one inside piece of source s, found within the front piece of source f.
@@ -182,7 +193,7 @@ class AreaSort {
       r = s < f ? Relation::ahead : Relation::behind;  // the lower source wins a tie
     }
     if (r == Relation::behind) {
-      map_.hidden.push_back({std::move(piece), s, static_cast<std::int32_t>(f)});
+      hide(std::move(piece), s, f);
     } else if (r == Relation::ahead) {
       CGAL::Bbox_2 box = box_of(piece);
       ahead.push_back({std::move(piece), s, box});
@@ -195,7 +206,7 @@ class AreaSort {
       }
       for (auto& part : farther) {
         if (relation(part, s, f) != Relation::behind) throw clip::ClipError("penetration split left a mixed piece");
-        map_.hidden.push_back({std::move(part), s, static_cast<std::int32_t>(f)});
+        hide(std::move(part), s, f);
       }
     }
   }
@@ -245,7 +256,7 @@ class AreaSort {
           ++map_.stats.clips;
           subjects.clear();
           for (std::uint32_t other : cut) subjects.push_back(std::move(pieces[other].polygon));
-          clip::ClipRegion<K> region(front.polygon, src_.lines);
+          clip::ClipRegion<K> region(front.polygon, src_.lines, crossings());
           auto results = clip::clip_list<K>(subjects, region);
           for (std::size_t i = 0; i < cut.size(); ++i) {
             const std::uint32_t other = cut[i], source = pieces[other].source, home = slot_of[other];
@@ -273,11 +284,10 @@ class AreaSort {
         ++map_.stats.recursions;
         std::vector<Polygon> remaining{std::move(front.polygon)};
         for (const Item& a : ahead) {
-          clip::ClipRegion<K> region(a.polygon, src_.lines);
+          clip::ClipRegion<K> region(a.polygon, src_.lines, crossings());
           std::vector<Polygon> outside;
           for (auto& r : clip::clip_list<K>(remaining, region)) {
-            for (auto& piece : r.inside)
-              map_.hidden.push_back({std::move(piece), front.source, static_cast<std::int32_t>(a.source)});
+            for (auto& piece : r.inside) hide(std::move(piece), front.source, a.source);
             for (auto& piece : r.outside) outside.push_back(std::move(piece));
           }
           remaining.swap(outside);
@@ -291,6 +301,8 @@ class AreaSort {
   }
 
   Sources<K>& src_;
+  AreaSortOptions options_;
+  clip::CrossingCache<K> crossings_;
   std::vector<double> nearest_;
   std::size_t depth_ = 0;
   VisibilityMap<K> map_;
@@ -299,8 +311,8 @@ class AreaSort {
 }  // namespace detail
 
 template <class K>
-VisibilityMap<K> area_sort(Sources<K>& sources) {
-  return detail::AreaSort<K>(sources).run();
+VisibilityMap<K> area_sort(Sources<K>& sources, const AreaSortOptions& options) {
+  return detail::AreaSort<K>(sources, options).run();
 }
 
 }  // namespace hlr::hidden_line

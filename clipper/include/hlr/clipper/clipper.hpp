@@ -10,12 +10,14 @@
 
 #include <hlr/kernel/kernel.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace hlr::clip {
@@ -80,12 +82,39 @@ Contour<K> make_contour(const std::vector<typename Geometry<K>::Point>& points, 
 template <class K>
 std::optional<std::string> normalize_polygon(Polygon<K>& polygon);
 
+// The points where two support lines cross, constructed once per pair of lines (rule 3 makes the
+// pair a point's identity): the same crossing found by different clips is then one shared point,
+// equal to itself without arithmetic. For the exact kernel; one per sort, not shared by threads.
+template <class K>
+class CrossingCache {
+ public:
+  using Point = typename Geometry<K>::Point;
+  // Throws std::runtime_error when the lines are parallel.
+  Point crossing(LineId a, LineId b, const LineTable<K>& lines) {
+    const LineId lo = std::min(a, b), hi = std::max(a, b);
+    auto [it, added] = points_.try_emplace((std::uint64_t(lo) << 32) | hi);
+    if (added) {
+      try {
+        it->second = Geometry<K>::line_intersection(lines[lo].a, lines[lo].b, lines[hi].a, lines[hi].b);
+      } catch (...) {
+        points_.erase(it);
+        throw;
+      }
+    }
+    return it->second;
+  }
+
+ private:
+  std::unordered_map<std::uint64_t, Point> points_;
+};
+
 // The clip polygon, prepared once for clipping many subjects (the area sort's use).
-// Must be normalized and valid. Keeps a reference to `lines`, which must outlive it.
+// Must be normalized and valid. Keeps a reference to `lines`, which must outlive it, and takes
+// its crossings from `crossings` when given.
 template <class K>
 class ClipRegion {
  public:
-  ClipRegion(Polygon<K> polygon, const LineTable<K>& lines);
+  ClipRegion(Polygon<K> polygon, const LineTable<K>& lines, CrossingCache<K>* crossings = nullptr);
   ~ClipRegion();
   ClipRegion(ClipRegion&&) noexcept;
   ClipRegion& operator=(ClipRegion&&) noexcept;

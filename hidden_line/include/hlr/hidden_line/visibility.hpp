@@ -100,17 +100,22 @@ struct AreaSortStats {
 template <class K>
 struct VisibilityMap {
   std::vector<Fragment<K>> visible;
-  std::vector<Fragment<K>> hidden;
+  std::vector<Fragment<K>> hidden;  // empty unless AreaSortOptions::keep_hidden
   AreaSortStats stats;
+};
+
+struct AreaSortOptions {
+  // The hidden polygon set: `hlr surfaces` writes it; a line drawing needs only the visible one.
+  bool keep_hidden = true;
 };
 
 // Solves visibility for the sources; appends the lines of penetration splits to sources.lines.
 template <class K>
-VisibilityMap<K> area_sort(Sources<K>& sources);
+VisibilityMap<K> area_sort(Sources<K>& sources, const AreaSortOptions& options = {});
 
 #define HLR_HIDDEN_LINE_DECLARE(K, EXTERN)                                                                 \
   EXTERN template Sources<K> build_sources<K>(const std::vector<Mesh>&, const ViewFrame<K>&, const SourceOptions&); \
-  EXTERN template VisibilityMap<K> area_sort<K>(Sources<K>&);
+  EXTERN template VisibilityMap<K> area_sort<K>(Sources<K>&, const AreaSortOptions&);
 
 HLR_HIDDEN_LINE_DECLARE(ExactKernel, extern)
 HLR_HIDDEN_LINE_DECLARE(EpickKernel, extern)

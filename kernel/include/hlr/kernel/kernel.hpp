@@ -89,6 +89,16 @@ struct CgalGeometry {
   using Point = typename K::Point_2;
   static constexpr bool exact_constructions = std::is_same_v<K, ExactKernel>;
 
+  // A key shared exactly by copies of one point (on the exact kernel, its representation): equal
+  // keys mean equal points without arithmetic. 0 on kernels whose points are plain values.
+  static std::uintptr_t identity(const Point& p) {
+    if constexpr (exact_constructions) return static_cast<std::uintptr_t>(p.id());
+    else return 0;
+  }
+  // Copies of one Epeck point. (CGAL::identical would compare the two objects' addresses here: its
+  // Handle overload loses to the generic template for Point_2.)
+  static bool same(const Point& a, const Point& b) { return exact_constructions && identity(a) == identity(b); }
+
   static Point point(double x, double y) { return Point(x, y); }
   static Point point(const FT& x, const FT& y) requires(!std::is_same_v<FT, double>) { return Point(x, y); }
   static int sign(const FT& v) {
@@ -106,7 +116,7 @@ struct CgalGeometry {
     // orientation 0: known without the interval filter, which cannot certify a zero and would
     // fall back to exact arithmetic.
     if constexpr (exact_constructions) {
-      if (CGAL::identical(a, b) || CGAL::identical(b, c) || CGAL::identical(a, c)) {
+      if (same(a, b) || same(b, c) || same(a, c)) {
         PredicateStats::add(PredicateFamily::orientation, DecidedBy::identity);
         return 0;
       }
@@ -122,7 +132,7 @@ struct CgalGeometry {
   // decide almost every case without CGAL's filter machinery; ties go to CGAL's exact predicate.
   static int compare_x(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
-      if (CGAL::identical(a, b)) return counted(DecidedBy::identity, 0);
+      if (same(a, b)) return counted(DecidedBy::identity, 0);
       const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
       if (c != 2) return counted(DecidedBy::interval, c);
       PredicateStats::add(PredicateFamily::comparison, DecidedBy::exact);
@@ -131,7 +141,7 @@ struct CgalGeometry {
   }
   static int compare_y(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
-      if (CGAL::identical(a, b)) return counted(DecidedBy::identity, 0);
+      if (same(a, b)) return counted(DecidedBy::identity, 0);
       const int c = compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y());
       if (c != 2) return counted(DecidedBy::interval, c);
       PredicateStats::add(PredicateFamily::comparison, DecidedBy::exact);
@@ -140,7 +150,7 @@ struct CgalGeometry {
   }
   static int compare_xy(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
-      if (CGAL::identical(a, b)) return counted(DecidedBy::identity, 0);
+      if (same(a, b)) return counted(DecidedBy::identity, 0);
       const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
       if (c == -1 || c == 1) return counted(DecidedBy::interval, c);
       if (c == 0) {
@@ -153,7 +163,7 @@ struct CgalGeometry {
   }
   static bool equal(const Point& a, const Point& b) {
     if constexpr (exact_constructions) {
-      if (CGAL::identical(a, b)) return true;
+      if (same(a, b)) return true;
       if (compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x()) % 2 != 0 ||
           compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y()) % 2 != 0)
         return false;
@@ -184,12 +194,7 @@ struct CgalGeometry {
   }
   static Point midpoint(const Point& a, const Point& b) { return CGAL::midpoint(a, b); }
 
-  // A key shared exactly by copies of one point (on the exact kernel, its representation): equal
-  // keys mean equal points without arithmetic. 0 on kernels whose points are plain values.
-  static std::uintptr_t identity(const Point& p) {
-    if constexpr (exact_constructions) return static_cast<std::uintptr_t>(p.id());
-    else return 0;
-  }
+
   static FT x(const Point& p) { return p.x(); }
   static FT y(const Point& p) { return p.y(); }
   // sign(a x + b y + c - z): where a plane z = a x + b y + c lies against depth z at (x, y). Decided

@@ -16,6 +16,7 @@
 #include <hlr/export/lines.hpp>
 
 #include "document_json.hpp"
+#include "numbers.hpp"
 
 #include <dl_dxf.h>
 #include <dl_writer_ascii.h>
@@ -26,7 +27,7 @@
 #include <charconv>
 #include <cmath>
 #include <map>
-#include <sstream>
+#include <string_view>
 
 namespace hlr::exporter {
 namespace {
@@ -92,32 +93,31 @@ std::optional<Box> drawn_bounds(const LineDrawing& drawing, const DrawingStyle& 
 // ---------------------------------------------------------------------------------------------
 // Numbers.
 
-// Fixed notation with at most `decimals` decimals, trailing zeros trimmed, no "-0".
-// std::to_chars: independent of the C locale.
-std::string fixed(double v, int decimals) {
-  char buf[400];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-  std::string s(buf, ec == std::errc() ? end : buf);
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.') s.pop_back();
+// A document's text, appended to in place; numbers through numbers.hpp, so that no number makes a
+// stream or a string of its own.
+struct Text {
+  std::string s;
+  Text& operator<<(std::string_view v) {
+    s += v;
+    return *this;
   }
-  if (s == "-0") s = "0";
-  return s;
-}
+  Text& operator<<(char c) {
+    s += c;
+    return *this;
+  }
+};
 
 // Sheet millimetres: 0.1 µm is below anything a plotter or a viewer shows.
-std::string mm(double v) { return fixed(v, 4); }
-
-// Shortest text that reads back as the same double, in fixed notation (DXF readers differ on
-// exponents), with a decimal point as DXF writers customarily give one.
-std::string round_trip(double v) {
-  char buf[400];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
-  std::string s(buf, ec == std::errc() ? end : buf);
-  if (s.find('.') == std::string::npos) s += ".0";
-  return s;
+struct Mm {
+  double v;
+};
+Mm mm(double v) { return {v}; }
+Text& operator<<(Text& out, Mm v) {
+  detail::append_fixed(out.s, v.v, 4);
+  return out;
 }
+
+using detail::fixed;
 
 // "1:5", "2:1", "1:2.5".
 std::string scale_label(double scale) {
@@ -213,7 +213,7 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
 // ---------------------------------------------------------------------------------------------
 // SVG.
 
-void svg_title_block(std::ostringstream& out, const LineDrawing& drawing, const SheetLayout& l, double scale) {
+void svg_title_block(Text& out, const LineDrawing& drawing, const SheetLayout& l, double scale) {
   const Box& t = l.title;
   const double view_width = 70, scale_width = 50;  // the bottom row's cells; "hlr" takes the rest
   out << "<g id=\"title-block\" fill=\"none\" stroke=\"#000\" stroke-width=\"" << mm(ruling_width) << "\">\n"
@@ -250,7 +250,7 @@ void svg_title_block(std::ostringstream& out, const LineDrawing& drawing, const 
 
 // The ISO 5457 frame and centring marks (from the sheet edge to 5 mm inside the frame; the bottom
 // one stops at the frame where the title block lies under it).
-void svg_frame(std::ostringstream& out, const Sheet& sheet, const SheetLayout& l) {
+void svg_frame(Text& out, const Sheet& sheet, const SheetLayout& l) {
   const Box& f = l.frame;
   const double mx = sheet.width_mm / 2, my = sheet.height_mm / 2;
   const double bottom_mark_end = mx >= l.title.x0 ? f.y1 : f.y1 - 5;
@@ -408,7 +408,8 @@ std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
   auto sheet_x = [&](double x) { return l.area.cx() + (x - bounds.cx()) * scale; };
   auto sheet_y = [&](double y) { return l.area.cy() - (y - bounds.cy()) * scale; };
 
-  std::ostringstream out;
+  Text out;
+  out.s.reserve(4096 + 32 * drawing.segments.size());
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << mm(sheet.width_mm) << "mm\" height=\""
       << mm(sheet.height_mm) << "mm\" viewBox=\"0 0 " << mm(sheet.width_mm) << ' ' << mm(sheet.height_mm) << "\">\n"
@@ -449,7 +450,7 @@ std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
   if (style.hidden) group(false);  // below the visible lines
   group(true);
   out << "</svg>\n";
-  return out.str();
+  return std::move(out.s);
 }
 
 namespace {
@@ -459,26 +460,42 @@ namespace {
 class DxfText : public DL_WriterA {
  public:
   DxfText() : DL_WriterA("", DL_Codes::AC1015) {}
-  std::string text() const { return out_.str(); }
+  std::string& text() { return out_; }
 
-  void dxfReal(int gc, double value) const override { group(gc, round_trip(value)); }
-  void dxfInt(int gc, int value) const override { group(gc, std::to_string(value)); }
+  void dxfReal(int gc, double value) const override {
+    code(gc);
+    detail::append_round_trip(out_, value);
+    out_ += '\n';
+  }
+  void dxfInt(int gc, int value) const override {
+    char buf[16];
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
+    group(gc, std::string_view(buf, std::size_t(end - buf)));
+  }
   void dxfHex(int gc, int value) const override {
     char buf[16];
     auto [end, ec] = std::to_chars(buf, buf + sizeof buf, static_cast<unsigned>(value), 16);
-    std::string hex(buf, end);
-    for (char& c : hex) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    group(gc, hex);
+    for (char* c = buf; c != end; ++c) *c = static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+    group(gc, std::string_view(buf, std::size_t(end - buf)));
   }
   void dxfString(int gc, const char* value) const override { group(gc, value); }
   void dxfString(int gc, const std::string& value) const override { group(gc, value); }
 
  private:
   // Group codes right-aligned in three columns, as DXF writers customarily do.
-  void group(int gc, const std::string& value) const {
-    out_ << (gc < 10 ? "  " : gc < 100 ? " " : "") << gc << '\n' << value << '\n';
+  void code(int gc) const {
+    out_ += gc < 10 ? "  " : gc < 100 ? " " : "";
+    char buf[16];
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, gc);
+    out_.append(buf, std::size_t(end - buf));
+    out_ += '\n';
   }
-  mutable std::ostringstream out_;
+  void group(int gc, std::string_view value) const {
+    code(gc);
+    out_ += value;
+    out_ += '\n';
+  }
+  mutable std::string out_;
 };
 
 }  // namespace
@@ -490,6 +507,7 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
   // Everything after the HEADER first, so that $HANDSEED can name the next free handle.
   DL_Dxf dxf;  // writes R2000 (AC1015) unless told otherwise
   DxfText body;
+  body.text().reserve(8192 + 64 * drawing.segments.size());
   body.sectionTables();
   dxf.writeVPort(body);
 
@@ -586,7 +604,7 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
   header.dxfReal(20, bounds.y1);
   header.dxfReal(30, 0.0);
   header.sectionEnd();
-  return header.text() + body.text();
+  return std::move(header.text()) + body.text();
 }
 
 }  // namespace hlr::exporter

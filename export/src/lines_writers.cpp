@@ -1,6 +1,7 @@
 // The kernel-independent writers of hlr/export/lines.hpp: the sheet and its scale, chaining of the
-// drawing segments into polylines, and the hlr-lines/1 JSON, SVG and DXF documents. Everything here
-// works on plain doubles; the one rounding of the exact result happened in make_drawing.
+// drawing segments into polylines, and the SVG and DXF documents (the hlr-lines/1 JSON is in
+// lines_json.cpp). Everything here works on plain doubles; the one rounding of the exact result
+// happened in make_drawing.
 //
 // Line styles after ISO 128-20 (line types 01 and 02) in the 0.5 mm line group:
 //   visible  continuous wide line, 0.5 mm;
@@ -15,12 +16,10 @@
 // round-trip numbers), and the HEADER section is written once the last handle is known.
 #include <hlr/export/lines.hpp>
 
-#include "document_json.hpp"
 #include "numbers.hpp"
 
 #include <dl_dxf.h>
 #include <dl_writer_ascii.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -31,8 +30,6 @@
 
 namespace hlr::exporter {
 namespace {
-
-using nlohmann::json;
 
 // ---------------------------------------------------------------------------------------------
 // Sheet layout (millimetres, SVG axes: origin top left, y down).
@@ -312,91 +309,11 @@ std::vector<DrawingPolyline> chain_segments(const std::vector<DrawingSegment>& s
   return chains;
 }
 
-namespace detail {
-
-json input_json(const InputInfo& input) {
-  return {{"files", input.files}, {"faces", input.faces}, {"vertices", input.vertices}};
-}
-
-json view_json(const ViewInfo& v) {
-  json view;
-  view["projection"] = "orthographic";
-  if (v.name != "custom") view["name"] = v.name;
-  view["direction"] = {v.direction[0], v.direction[1], v.direction[2]};
-  view["up"] = {v.up[0], v.up[1], v.up[2]};
-  json matrix = json::array();
-  for (const auto& row : v.world_to_view) matrix.push_back({row[0], row[1], row[2], row[3]});
-  view["world_to_view"] = std::move(matrix);
-  return view;
-}
-
-}  // namespace detail
-
 double LineDrawing::length(bool visible) const {
   double sum = 0;
   for (const auto& seg : segments)
     if (seg.visible == visible) sum += std::hypot(seg.b[0] - seg.a[0], seg.b[1] - seg.a[1]);
   return sum;
-}
-
-std::string lines_json(const LineDrawing& drawing) {
-  json out;
-  out["format"] = "hlr-lines/1";
-  out["input"] = detail::input_json(drawing.input);
-  out["view"] = detail::view_json(drawing.view);
-  // top level, as in hlr-clip/1 and hlr-surfaces/1
-  out["kernel"] = drawing.raster ? "raster" : kernel_name(drawing.kernel);
-  if (const auto& r = drawing.raster)
-    out["raster"] = {{"resolution", r->resolution}, {"width", r->width}, {"height", r->height}, {"pixel", r->pixel}};
-
-  json lines = json::array();
-  for (const auto& p : drawing.pieces) {
-    json line;
-    line["a"] = {p.a[0], p.a[1], p.a[2]};
-    line["b"] = {p.b[0], p.b[1], p.b[2]};
-    line["visible"] = p.visible;
-    line["kind"] = feature_kind_name(p.kind);
-    line["mesh"] = p.mesh;
-    // Intersection lines lie on no mesh edge (DESIGN.md): null, whatever the piece says.
-    if (p.has_edge && p.kind != FeatureKind::intersection)
-      line["edge"] = {p.edge[0], p.edge[1]};
-    else
-      line["edge"] = nullptr;
-    lines.push_back(std::move(line));
-  }
-  out["lines"] = std::move(lines);
-
-  const auto& s = drawing.stats;
-  json by_kind = json::object();
-  for (auto kind : {FeatureKind::silhouette, FeatureKind::crease, FeatureKind::boundary, FeatureKind::intersection,
-                    FeatureKind::group})
-    by_kind[feature_kind_name(kind)] = s.by_kind[static_cast<std::size_t>(kind)];
-  const StageTimes& t = drawing.times;
-  const json stages =
-      drawing.raster ? json{{"read", t.read}, {"intersections", t.intersections}, {"zbuffer", drawing.zbuffer_seconds},
-                            {"lines", t.lines}}
-                     : json{{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"intersections", t.intersections},
-                            {"lines", t.lines}, {"precedence", t.precedence}};
-  out["stats"] = {
-      {"seconds", t.total},
-      {"stage_seconds", stages},
-      {"lines", s.lines},
-      {"lines_by_kind", std::move(by_kind)},
-      {"lines_seen_end_on", s.point_in_view},
-      {"visible_pieces", s.visible_pieces},
-      {"hidden_pieces", s.hidden_pieces},
-      {"drawn_visible_length", drawing.visible_length()},
-      {"drawn_hidden_length", drawing.hidden_length()},
-      {"crease_degrees", drawing.crease_degrees},
-      {"welded_vertices", drawing.input.welded_vertices},
-  };
-  if (drawing.merged_segments) {
-    out["stats"]["merged_segments"] = *drawing.merged_segments;
-    out["stats"]["merge_distance_mm"] = drawing.merge_distance_mm;
-    out["stats"]["contact_segments"] = drawing.contact_segments;
-    out["stats"]["contact_degrees"] = drawing.contact_degrees;
-  }
-  return out.dump(1) + "\n";
 }
 
 std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {

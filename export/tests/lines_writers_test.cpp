@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <random>
 #include <set>
@@ -273,6 +274,145 @@ TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {
   EXPECT_TRUE(j["lines"].is_array());
   EXPECT_TRUE(j["lines"].empty());
   EXPECT_EQ(j["kernel"], "epick");
+}
+
+// The document as one nlohmann::json tree, dumped: how lines_json made it before it wrote the
+// pieces itself (lines_writers.cpp at 68e0aa3), kept here as the reference for its bytes.
+std::string lines_json_as_one_tree(const LineDrawing& drawing) {
+  json out;
+  out["format"] = "hlr-lines/1";
+  out["input"] = {{"files", drawing.input.files}, {"faces", drawing.input.faces}, {"vertices", drawing.input.vertices}};
+  const ViewInfo& v = drawing.view;
+  json view;
+  view["projection"] = "orthographic";
+  if (v.name != "custom") view["name"] = v.name;
+  view["direction"] = {v.direction[0], v.direction[1], v.direction[2]};
+  view["up"] = {v.up[0], v.up[1], v.up[2]};
+  json matrix = json::array();
+  for (const auto& row : v.world_to_view) matrix.push_back({row[0], row[1], row[2], row[3]});
+  view["world_to_view"] = std::move(matrix);
+  out["view"] = std::move(view);
+  out["kernel"] = drawing.raster ? "raster" : kernel_name(drawing.kernel);
+  if (const auto& r = drawing.raster)
+    out["raster"] = {{"resolution", r->resolution}, {"width", r->width}, {"height", r->height}, {"pixel", r->pixel}};
+  json lines = json::array();
+  for (const auto& p : drawing.pieces) {
+    json line;
+    line["a"] = {p.a[0], p.a[1], p.a[2]};
+    line["b"] = {p.b[0], p.b[1], p.b[2]};
+    line["visible"] = p.visible;
+    line["kind"] = feature_kind_name(p.kind);
+    line["mesh"] = p.mesh;
+    if (p.has_edge && p.kind != FeatureKind::intersection)
+      line["edge"] = {p.edge[0], p.edge[1]};
+    else
+      line["edge"] = nullptr;
+    lines.push_back(std::move(line));
+  }
+  out["lines"] = std::move(lines);
+  const auto& s = drawing.stats;
+  json by_kind = json::object();
+  for (auto kind : {FeatureKind::silhouette, FeatureKind::crease, FeatureKind::boundary, FeatureKind::intersection,
+                    FeatureKind::group})
+    by_kind[feature_kind_name(kind)] = s.by_kind[static_cast<std::size_t>(kind)];
+  const StageTimes& t = drawing.times;
+  const json stages =
+      drawing.raster ? json{{"read", t.read}, {"intersections", t.intersections}, {"zbuffer", drawing.zbuffer_seconds},
+                            {"lines", t.lines}}
+                     : json{{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"intersections", t.intersections},
+                            {"lines", t.lines}, {"precedence", t.precedence}};
+  out["stats"] = {
+      {"seconds", t.total},
+      {"stage_seconds", stages},
+      {"lines", s.lines},
+      {"lines_by_kind", std::move(by_kind)},
+      {"lines_seen_end_on", s.point_in_view},
+      {"visible_pieces", s.visible_pieces},
+      {"hidden_pieces", s.hidden_pieces},
+      {"drawn_visible_length", drawing.visible_length()},
+      {"drawn_hidden_length", drawing.hidden_length()},
+      {"crease_degrees", drawing.crease_degrees},
+      {"welded_vertices", drawing.input.welded_vertices},
+  };
+  if (drawing.merged_segments) {
+    out["stats"]["merged_segments"] = *drawing.merged_segments;
+    out["stats"]["merge_distance_mm"] = drawing.merge_distance_mm;
+    out["stats"]["contact_segments"] = drawing.contact_segments;
+    out["stats"]["contact_degrees"] = drawing.contact_degrees;
+  }
+  return out.dump(1) + "\n";
+}
+
+// Pieces of every kind with coordinates of every magnitude and bit pattern (signed zeros,
+// subnormals, NaN and infinities, which JSON writes as null), edges up to the largest index.
+LineDrawing random_drawing(std::uint32_t seed, std::size_t pieces) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coordinate(-500, 500);
+  auto number = [&]() -> double {
+    switch (rng() % 8) {
+      case 0: return std::bit_cast<double>(rng());  // any double at all, NaN and infinity included
+      case 1: return double(std::int64_t(rng() % 2001) - 1000);
+      case 2: return (rng() % 2) ? 0.0 : -0.0;
+      case 3: return std::ldexp(double(rng() % 1000), -int(rng() % 1100));  // down to subnormals
+      default: return coordinate(rng);
+    }
+  };
+  LineDrawing d = drawing_of({});
+  d.input.files = {"fixtures/part.off", "dir/\"quoted\" na\\me\twith\ttabs.off", "dir/pièce — ∅.off"};
+  d.input.faces = rng() % 100000;
+  d.input.vertices = rng() % 100000;
+  d.input.welded_vertices = rng() % 10;
+  for (auto& row : d.view.world_to_view)
+    for (double& x : row) x = number();
+  for (std::size_t i = 0; i < pieces; ++i) {
+    DrawingPiece p;
+    p.a = {number(), number(), number()};
+    p.b = {number(), number(), number()};
+    p.visible = rng() % 2;
+    p.kind = static_cast<FeatureKind>(rng() % 5);
+    p.mesh = std::uint32_t(rng() % 3);
+    p.has_edge = rng() % 4 != 0;
+    p.edge = {std::uint32_t(rng()), i % 7 ? std::uint32_t(rng() % 100) : 0xffffffffu};
+    d.pieces.push_back(p);
+    if (i % 3 == 0) d.segments.push_back(seg({p.a[0], p.a[1]}, {p.b[0], p.b[1]}, p.visible, p.mesh));
+  }
+  d.stats.lines = pieces / 2;
+  for (auto& k : d.stats.by_kind) k = rng() % 1000;
+  d.stats.visible_pieces = rng() % 1000;
+  d.stats.hidden_pieces = rng() % 1000;
+  d.times.read = number();
+  d.times.sort = 1.0 / 3;
+  d.times.total = 2.5;
+  d.crease_degrees = 30;
+  return d;
+}
+
+TEST(LinesJson, BytesAsOneTreeDumpsThem) {
+  LineDrawing empty;
+  EXPECT_EQ(lines_json(empty), lines_json_as_one_tree(empty));
+  empty.view.name = "custom";
+  EXPECT_EQ(lines_json(empty), lines_json_as_one_tree(empty));
+  for (std::uint32_t seed : {1u, 2u, 3u, 4u}) {
+    LineDrawing d = random_drawing(seed, seed == 1 ? 1 : 3000);
+    if (seed % 2 == 0) {
+      d.merged_segments = seed;
+      d.merge_distance_mm = 0.01;
+      d.contact_segments = 2;
+      d.contact_degrees = 10;
+    }
+    if (seed == 3) {
+      d.raster = RasterInfo{512, 512, 300, 0.125};
+      d.zbuffer_seconds = 0.75;
+    }
+    if (seed == 4) d.view.name = "custom";
+    const std::string got = lines_json(d), want = lines_json_as_one_tree(d);
+    EXPECT_EQ(got.size(), want.size()) << "seed " << seed;
+    const auto mismatch = std::mismatch(got.begin(), got.end(), want.begin(), want.end());
+    EXPECT_TRUE(mismatch.first == got.end() && mismatch.second == want.end())
+        << "seed " << seed << ": first difference at byte " << (mismatch.first - got.begin()) << ":\n"
+        << got.substr(std::size_t(std::max<std::ptrdiff_t>(0, mismatch.first - got.begin() - 80)), 160) << "\nagainst\n"
+        << want.substr(std::size_t(std::max<std::ptrdiff_t>(0, mismatch.second - want.begin() - 80)), 160);
+  }
 }
 
 // --------------------------------------------------------------------------------------------

@@ -25,7 +25,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <map>
 #include <string_view>
 
 namespace hlr::exporter {
@@ -160,25 +159,38 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
   std::vector<const DrawingSegment*> mine;  // this class's segments of non-zero length, in input order
   for (const auto& s : segments)
     if (s.visible == visible && s.a != s.b) mine.push_back(&s);
-  // Exact equality of endpoints: -0.0 and 0.0 compare equal, as they should.
-  using End = std::pair<std::uint32_t, Point2>;  // mesh, point
-  std::map<End, std::vector<std::size_t>> ending_at;
-  for (std::size_t i = 0; i < mine.size(); ++i) {
-    ending_at[{mine[i]->mesh, mine[i]->a}].push_back(i);
-    ending_at[{mine[i]->mesh, mine[i]->b}].push_back(i);
+  // The segments' ends, end 2i being mine[i]'s a and 2i + 1 its b, grouped by mesh and point:
+  // sorted stably, so that a point's ends stay in segment order. Exact equality of endpoints:
+  // -0.0 and 0.0 are one point, as they should be.
+  const std::size_t end_count = 2 * mine.size();
+  auto point = [&](std::uint32_t end) -> const Point2& { return end % 2 ? mine[end / 2]->b : mine[end / 2]->a; };
+  auto before = [&](std::uint32_t e, std::uint32_t f) {
+    const std::uint32_t me = mine[e / 2]->mesh, mf = mine[f / 2]->mesh;
+    return me != mf ? me < mf : point(e) < point(f);
+  };
+  std::vector<std::uint32_t> ends(end_count);
+  for (std::uint32_t e = 0; e < end_count; ++e) ends[e] = e;
+  std::stable_sort(ends.begin(), ends.end(), before);
+  // The ends at the point of end e are ends[first[at[e]], first[at[e] + 1]).
+  std::vector<std::uint32_t> at(end_count), first;
+  for (std::size_t k = 0; k < end_count; ++k) {
+    if (k == 0 || before(ends[k - 1], ends[k])) first.push_back(std::uint32_t(k));
+    at[ends[k]] = std::uint32_t(first.size() - 1);
   }
+  first.push_back(std::uint32_t(end_count));
+  auto degree = [&](std::uint32_t end) { return first[at[end] + 1] - first[at[end]]; };
+
   std::vector<bool> used(mine.size(), false);
-  auto other_end = [&](std::size_t i, const Point2& p) { return mine[i]->a == p ? mine[i]->b : mine[i]->a; };
-  // Walks on from `end`, arrived at along segment `via`, through points of degree two.
-  auto walk = [&](Point2 end, std::size_t via, std::vector<Point2>& points) {
+  // Walks on from `end` (an end of segment `via`) through points of degree two.
+  auto walk = [&](std::uint32_t end, std::size_t via, std::vector<Point2>& points) {
     for (;;) {
-      const auto& incident = ending_at.find({mine[via]->mesh, end})->second;
-      if (incident.size() != 2) return;
-      const std::size_t next = incident[0] == via ? incident[1] : incident[0];
+      if (degree(end) != 2) return;
+      const std::uint32_t* incident = &ends[first[at[end]]];
+      const std::size_t next = incident[0] / 2 == via ? incident[1] / 2 : incident[0] / 2;
       if (used[next]) return;
       used[next] = true;
-      end = other_end(next, end);
-      points.push_back(end);
+      end = mine[next]->a == point(end) ? std::uint32_t(2 * next + 1) : std::uint32_t(2 * next);  // its other end
+      points.push_back(point(end));
       via = next;
     }
   };
@@ -191,16 +203,15 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
     chain.visible = visible;
     chain.mesh = mine[seed]->mesh;
     chain.points = {mine[seed]->a, mine[seed]->b};
-    walk(mine[seed]->b, seed, chain.points);
+    walk(std::uint32_t(2 * seed + 1), seed, chain.points);
     const Point2 start = chain.points.front();
-    if (chain.points.size() > 2 && chain.points.back() == start &&
-        ending_at.find({chain.mesh, start})->second.size() == 2) {
+    if (chain.points.size() > 2 && chain.points.back() == start && degree(std::uint32_t(2 * seed)) == 2) {
       chain.points.pop_back();  // went round a loop
       chain.closed = true;
     } else {
-      std::vector<Point2> before;
-      walk(start, seed, before);
-      chain.points.insert(chain.points.begin(), before.rbegin(), before.rend());
+      std::vector<Point2> back;
+      walk(std::uint32_t(2 * seed), seed, back);
+      chain.points.insert(chain.points.begin(), back.rbegin(), back.rend());
     }
     chains.push_back(std::move(chain));
   }
@@ -316,10 +327,10 @@ double LineDrawing::length(bool visible) const {
   return sum;
 }
 
-std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
+std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& lines) {
   const Sheet& sheet = style.sheet;
   const SheetLayout l = layout_of(sheet);
-  const double scale = drawing_scale(drawing, style);
+  const double scale = lines.scale;
   const Box bounds = drawn_bounds(drawing, style).value_or(Box{});
   // The drawing's centre on the area's centre; view y up, sheet y down.
   auto sheet_x = [&](double x) { return l.area.cx() + (x - bounds.cx()) * scale; };
@@ -338,7 +349,7 @@ std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
   // Each part's lines in a group of its own inside the class's group, so that a part can be
   // switched off: ids are unique ("part-NAME-visible", "part-NAME-hidden"), the class names the
   // part in both.
-  const auto chains = chain_segments(sheet_segments(drawing, style).segments);
+  const auto& chains = lines.chains;
   const auto names = part_names(drawing);
   auto group = [&](bool visible) {
     if (visible)
@@ -417,8 +428,8 @@ class DxfText : public DL_WriterA {
 
 }  // namespace
 
-std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
-  const double scale = drawing_scale(drawing, style);
+std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& lines) {
+  const double scale = lines.scale;
   const Box bounds = drawn_bounds(drawing, style).value_or(Box{});
   const std::string hidden_ltype = "HIDDEN";
   // Everything after the HEADER first, so that $HANDSEED can name the next free handle.
@@ -483,14 +494,15 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
 
   // Hidden first, so that viewers drawing in file order put the visible lines on top.
   body.sectionEntities();
-  auto chains = chain_segments(sheet_segments(drawing, style).segments);
-  std::stable_partition(chains.begin(), chains.end(), [](const DrawingPolyline& c) { return !c.visible; });
-  for (const auto& c : chains) {
-    if (!c.visible && !style.hidden) continue;
-    dxf.writePolyline(body, DL_PolylineData(static_cast<int>(c.points.size()), 0, 0, c.closed ? 1 : 0),
-                      DL_Attributes(layer(c.mesh, c.visible), 256, -1, "BYLAYER", 1.0));
-    for (const Point2& p : c.points) dxf.writeVertex(body, DL_VertexData(p[0], p[1], 0.0, 0.0));
-    dxf.writePolylineEnd(body);
+  for (const bool visible : {false, true}) {
+    if (!visible && !style.hidden) continue;
+    for (const auto& c : lines.chains) {
+      if (c.visible != visible) continue;
+      dxf.writePolyline(body, DL_PolylineData(static_cast<int>(c.points.size()), 0, 0, c.closed ? 1 : 0),
+                        DL_Attributes(layer(c.mesh, c.visible), 256, -1, "BYLAYER", 1.0));
+      for (const Point2& p : c.points) dxf.writeVertex(body, DL_VertexData(p[0], p[1], 0.0, 0.0));
+      dxf.writePolylineEnd(body);
+    }
   }
   body.sectionEnd();
   dxf.writeObjects(body);
@@ -521,7 +533,17 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
   header.dxfReal(20, bounds.y1);
   header.dxfReal(30, 0.0);
   header.sectionEnd();
-  return std::move(header.text()) + body.text();
+  std::string text = std::move(header.text());
+  text += body.text();
+  return text;
+}
+
+std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
+  return lines_svg(drawing, style, sheet_lines(drawing, style));
+}
+
+std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
+  return lines_dxf(drawing, style, sheet_lines(drawing, style));
 }
 
 }  // namespace hlr::exporter

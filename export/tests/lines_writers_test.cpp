@@ -193,6 +193,92 @@ TEST(Chaining, Deterministic) {
   }
 }
 
+// chain_segments as it was written first (lines_writers.cpp at 68e0aa3: a std::map from each
+// mesh and point to the segments ending there), kept here as the reference of its output.
+std::vector<DrawingPolyline> reference_chain_class(const std::vector<DrawingSegment>& segments, bool visible) {
+  std::vector<const DrawingSegment*> mine;
+  for (const auto& s : segments)
+    if (s.visible == visible && s.a != s.b) mine.push_back(&s);
+  using End = std::pair<std::uint32_t, Point2>;
+  std::map<End, std::vector<std::size_t>> ending_at;
+  for (std::size_t i = 0; i < mine.size(); ++i) {
+    ending_at[{mine[i]->mesh, mine[i]->a}].push_back(i);
+    ending_at[{mine[i]->mesh, mine[i]->b}].push_back(i);
+  }
+  std::vector<bool> used(mine.size(), false);
+  auto other_end = [&](std::size_t i, const Point2& p) { return mine[i]->a == p ? mine[i]->b : mine[i]->a; };
+  auto walk = [&](Point2 end, std::size_t via, std::vector<Point2>& points) {
+    for (;;) {
+      const auto& incident = ending_at.find({mine[via]->mesh, end})->second;
+      if (incident.size() != 2) return;
+      const std::size_t next = incident[0] == via ? incident[1] : incident[0];
+      if (used[next]) return;
+      used[next] = true;
+      end = other_end(next, end);
+      points.push_back(end);
+      via = next;
+    }
+  };
+  std::vector<DrawingPolyline> chains;
+  for (std::size_t seed = 0; seed < mine.size(); ++seed) {
+    if (used[seed]) continue;
+    used[seed] = true;
+    DrawingPolyline chain;
+    chain.visible = visible;
+    chain.mesh = mine[seed]->mesh;
+    chain.points = {mine[seed]->a, mine[seed]->b};
+    walk(mine[seed]->b, seed, chain.points);
+    const Point2 start = chain.points.front();
+    if (chain.points.size() > 2 && chain.points.back() == start &&
+        ending_at.find({chain.mesh, start})->second.size() == 2) {
+      chain.points.pop_back();
+      chain.closed = true;
+    } else {
+      std::vector<Point2> before;
+      walk(start, seed, before);
+      chain.points.insert(chain.points.begin(), before.rbegin(), before.rend());
+    }
+    chains.push_back(std::move(chain));
+  }
+  return chains;
+}
+
+TEST(Chaining, AsTheMapOfEndsDidOnRandomNetworks) {
+  // Segments between points of a small grid (so that points of degree 1 to 6 and loops abound),
+  // both directions, some of zero length, -0.0 beside 0.0, three meshes, both classes.
+  std::mt19937 random(5);
+  for (int round = 0; round < 40; ++round) {
+    const int side = 3 + round % 6;
+    std::uniform_int_distribution<int> coordinate(0, side - 1);
+    auto point = [&]() -> Point2 {
+      const int x = coordinate(random), y = coordinate(random);
+      return {x == 0 && random() % 2 ? -0.0 : double(x), double(y) / 3};
+    };
+    std::vector<DrawingSegment> segments;
+    const int n = 5 + int(random() % 200);
+    for (int i = 0; i < n; ++i) {
+      const Point2 a = point();
+      Point2 b = point();
+      if (random() % 3) b = {a[0] + (random() % 2 ? 1 : 0), a[1] + (random() % 2 ? 1.0 / 3 : 0)};  // neighbours
+      segments.push_back(seg(a, b, random() % 4 != 0, std::uint32_t(random() % 3)));
+    }
+    auto want = reference_chain_class(segments, true);
+    const auto hidden = reference_chain_class(segments, false);
+    want.insert(want.end(), hidden.begin(), hidden.end());
+    const auto got = chain_segments(segments);
+    ASSERT_EQ(got.size(), want.size()) << "round " << round;
+    for (std::size_t c = 0; c < got.size(); ++c) {
+      EXPECT_EQ(got[c].visible, want[c].visible);
+      EXPECT_EQ(got[c].mesh, want[c].mesh);
+      EXPECT_EQ(got[c].closed, want[c].closed) << "round " << round << ", chain " << c;
+      ASSERT_EQ(got[c].points.size(), want[c].points.size()) << "round " << round << ", chain " << c;
+      for (std::size_t k = 0; k < got[c].points.size(); ++k)  // the same doubles, signed zeros and all
+        EXPECT_EQ(std::memcmp(&got[c].points[k], &want[c].points[k], sizeof(Point2)), 0)
+            << "round " << round << ", chain " << c << ", point " << k;
+    }
+  }
+}
+
 // --------------------------------------------------------------------------------------------
 // JSON.
 
@@ -738,6 +824,30 @@ TEST(SheetSegments, DistanceIsMillimetresOnTheSheet) {
   // The SVG and the DXF draw the merged segments: one hidden path fewer.
   const SvgDocument doc = parse_svg(lines_svg(d, a4()));
   EXPECT_EQ(doc.in_group("path", "hidden").size(), 3u);
+}
+
+TEST(SheetLines, OnceForBothWriters) {
+  LineDrawing d = box_with_hidden_hole();
+  d.segments.push_back(seg({0, 0.004}, {100, 0.004}, false));  // merged at 2:1
+  DrawingSegment contact = seg({10, 10}, {20, 10});
+  contact.meeting_degrees = 5;  // a contact line: left out
+  d.segments.push_back(contact);
+  const SheetLines sheet = sheet_lines(d, a4());
+  EXPECT_EQ(sheet.scale, drawing_scale(d, a4()));
+  const MergedSegments merged = sheet_segments(d, a4());
+  EXPECT_EQ(sheet.merged.merged, 1u);
+  EXPECT_EQ(sheet.merged.contact, 1u);
+  ASSERT_EQ(sheet.merged.segments.size(), merged.segments.size());
+  const auto chains = chain_segments(merged.segments);
+  ASSERT_EQ(sheet.chains.size(), chains.size());
+  for (std::size_t c = 0; c < chains.size(); ++c) EXPECT_EQ(sheet.chains[c].points, chains[c].points);
+  EXPECT_EQ(lines_svg(d, a4(), sheet), lines_svg(d, a4()));
+  EXPECT_EQ(lines_dxf(d, a4(), sheet), lines_dxf(d, a4()));
+  // The writers draw what they are given: a sheet without chains has no lines.
+  SheetLines none = sheet;
+  none.chains.clear();
+  EXPECT_TRUE(parse_svg(lines_svg(d, a4(), none)).in_group("path", "visible").empty());
+  EXPECT_EQ(read_dxf(lines_dxf(d, a4(), none)).polylines.size(), 0u);
 }
 
 TEST(PartNames, StemsMadeIdSafeAndUnique) {

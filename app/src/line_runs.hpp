@@ -1,5 +1,6 @@
 // The line drawing of a scene, by a kernel or by the raster path: what `hlr draw` and `hlr check`
-// both run. Times exclude reading the meshes.
+// both run. Times exclude reading the meshes; times.write is the rounding of the exact drawing and
+// the freeing of the exact solution (the start of the output stage).
 #pragma once
 
 #include "scene_options.hpp"

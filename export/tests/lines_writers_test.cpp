@@ -338,7 +338,7 @@ TEST(LinesJson, FieldByField) {
   const json& s = j["stats"];
   EXPECT_EQ(s["seconds"], 1.5);
   EXPECT_EQ(s["stage_seconds"], json({{"read", 0.5}, {"sources", 0.25}, {"sort", 0.125}, {"intersections", 0.0},
-                                      {"lines", 0.375}, {"precedence", 0.0}}));
+                                      {"lines", 0.375}, {"precedence", 0.0}, {"write", 0.0}}));
   EXPECT_EQ(s["lines"], 2);
   EXPECT_EQ(s["lines_by_kind"],
             json({{"silhouette", 0}, {"crease", 1}, {"boundary", 0}, {"intersection", 1}, {"group", 0}}));
@@ -347,6 +347,26 @@ TEST(LinesJson, FieldByField) {
   EXPECT_EQ(s["hidden_pieces"], 1);
   EXPECT_EQ(j["kernel"], "exact");
   EXPECT_EQ(s["crease_degrees"], 45);
+}
+
+TEST(LinesJson, WriteStageCountsTheDocumentUpToItsStats) {
+  LineDrawing d = drawing_of({seg({0, 0}, {1, 0})});
+  d.times.read = 0.25;
+  d.times.sort = 1;
+  d.times.total = 1.25;
+  d.times.write = 0.5;  // rounding, say
+  json j = json::parse(lines_json(d));
+  EXPECT_EQ(j["stats"]["stage_seconds"]["write"], 0.5);
+  EXPECT_EQ(j["stats"]["seconds"], 1.75);
+  int calls = 0;
+  j = json::parse(lines_json(d, [&] { return ++calls, 2.0; }));
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(j["stats"]["stage_seconds"]["write"], 2.0);
+  EXPECT_EQ(j["stats"]["seconds"], 3.25);
+  d.raster = RasterInfo{64, 64, 32, 0.5};
+  j = json::parse(lines_json(d));
+  EXPECT_EQ(j["stats"]["stage_seconds"],
+            json({{"read", 0.25}, {"intersections", 0.0}, {"zbuffer", 0.0}, {"lines", 0.0}, {"write", 0.5}}));
 }
 
 TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {
@@ -363,7 +383,8 @@ TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {
 }
 
 // The document as one nlohmann::json tree, dumped: how lines_json made it before it wrote the
-// pieces itself (lines_writers.cpp at 68e0aa3), kept here as the reference for its bytes.
+// pieces itself (lines_writers.cpp at 68e0aa3, since then with the write stage in the stats),
+// kept here as the reference for its bytes.
 std::string lines_json_as_one_tree(const LineDrawing& drawing) {
   json out;
   out["format"] = "hlr-lines/1";
@@ -404,11 +425,11 @@ std::string lines_json_as_one_tree(const LineDrawing& drawing) {
   const StageTimes& t = drawing.times;
   const json stages =
       drawing.raster ? json{{"read", t.read}, {"intersections", t.intersections}, {"zbuffer", drawing.zbuffer_seconds},
-                            {"lines", t.lines}}
+                            {"lines", t.lines}, {"write", t.write}}
                      : json{{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"intersections", t.intersections},
-                            {"lines", t.lines}, {"precedence", t.precedence}};
+                            {"lines", t.lines}, {"precedence", t.precedence}, {"write", t.write}};
   out["stats"] = {
-      {"seconds", t.total},
+      {"seconds", t.total + t.write},
       {"stage_seconds", stages},
       {"lines", s.lines},
       {"lines_by_kind", std::move(by_kind)},
@@ -469,6 +490,7 @@ LineDrawing random_drawing(std::uint32_t seed, std::size_t pieces) {
   d.times.read = number();
   d.times.sort = 1.0 / 3;
   d.times.total = 2.5;
+  d.times.write = 0.1;
   d.crease_degrees = 30;
   return d;
 }

@@ -26,6 +26,7 @@
 #include <hlr/hidden_line/raster.hpp>
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -168,7 +169,12 @@ struct SheetLines {
 };
 SheetLines sheet_lines(const LineDrawing& drawing, const DrawingStyle& style);
 
-std::string lines_json(const LineDrawing& drawing);
+// The hlr-lines/1 document. Its stats.stage_seconds.write is drawing.times.write, or with
+// `write_seconds` what that returns: it is called once, when every piece is written and only the
+// stats and the view are left, so that a caller timing its output stage can count the JSON's own
+// building in it (but not the writing of its bytes to disk). stats.seconds is times.total plus
+// that time: the run from reading to the finished document.
+std::string lines_json(const LineDrawing& drawing, const std::function<double()>& write_seconds = {});
 // `sheet` must be sheet_lines(drawing, style); the overloads without it work it out themselves.
 std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& sheet);
 std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& sheet);

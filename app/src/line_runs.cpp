@@ -51,11 +51,12 @@ exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kin
   times.total = times.intersections + times.sources + times.sort + times.lines + times.precedence;
 
   // The output stage starts here: the one rounding of the exact result, then the exact solution
-  // freed.
+  // freed (or left to the process's exit: see LineRunSettings).
   mark = std::chrono::steady_clock::now();
   exporter::LineDrawing drawing =
       exporter::make_drawing<K>(scene.input, frame, kind, solution->lines, solution->segments);
-  solution.reset();
+  if (settings.free_at_exit) (void)solution.release();  // not a leak: see LineRunSettings::free_at_exit
+  else solution.reset();
   times.write = seconds_since(mark);
   drawing.crease_degrees = settings.crease;
   drawing.times = times;

@@ -92,7 +92,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
 
   // The output stage (stats.stage_seconds.write): the rounding of the exact drawing, timed in
   // drawing.times.write, then from here the sheet lines, every output but the JSON, and the JSON
-  // up to its stats. The JSON comes last so that it can count the others; its own bytes, and the
+  // up to its stats. The JSON comes last so that it can count the others; its last block, and the
   // flushing of every file to disk, come after it and are in the summary's total only.
   const auto write_start = std::chrono::steady_clock::now();
   auto write_seconds = [&] { return drawing.times.write + seconds_since(write_start); };
@@ -116,7 +116,9 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
     for (std::size_t i = 0; i < files.size(); ++i) {
       if ((formats[i] == Format::json) != json) continue;
       switch (formats[i]) {
-        case Format::json: files[i]->write(exporter::lines_json(drawing, write_seconds)); break;
+        case Format::json:
+          exporter::write_lines_json(drawing, [&](std::string_view text) { files[i]->write(text); }, write_seconds);
+          break;
         case Format::svg: files[i]->write(exporter::lines_svg(drawing, style, sheet)); break;
         case Format::dxf: files[i]->write(exporter::lines_dxf(drawing, style, sheet)); break;
         case Format::png:

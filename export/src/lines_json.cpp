@@ -6,7 +6,9 @@
 // array, nearly all of a large drawing's bytes, is written here piece by piece, straight into the
 // document's text (no JSON tree of a million pieces, no string per number); every other member
 // is a small nlohmann::json dumped in its place. lines_writers_test checks the bytes against a
-// dump of the whole document as one nlohmann::json tree.
+// dump of the whole document as one nlohmann::json tree. write_lines_json hands the text on in
+// blocks as it goes, so that a drawing of a million pieces is never held whole (lines_json
+// collects the blocks).
 #include <hlr/export/lines.hpp>
 
 #include "document_json.hpp"
@@ -20,6 +22,24 @@ namespace hlr::exporter {
 namespace {
 
 using nlohmann::json;
+
+// The document's text on its way to the sink, handed on in blocks of about a megabyte.
+class Output {
+ public:
+  explicit Output(const std::function<void(std::string_view)>& sink) : sink_(sink) { text.reserve(block + 4096); }
+  std::string text;
+  void flush_if_full() {
+    if (text.size() >= block) flush();
+  }
+  void flush() {
+    if (!text.empty()) sink_(text);
+    text.clear();
+  }
+
+ private:
+  static constexpr std::size_t block = std::size_t(1) << 20;
+  const std::function<void(std::string_view)>& sink_;
+};
 
 // `value` as dump(1) writes it as a member of the top-level object (one level in).
 void append_member(std::string& out, std::string_view key, const json& value) {
@@ -35,7 +55,8 @@ void append_member(std::string& out, std::string_view key, const json& value) {
 
 // The "lines" array as dump(1) writes it one level in: each piece an object with its keys in
 // order (a, b, edge, kind, mesh, visible) at two levels in, its values at three and four.
-void append_lines(std::string& out, const std::vector<DrawingPiece>& pieces) {
+void append_lines(Output& output, const std::vector<DrawingPiece>& pieces) {
+  std::string& out = output.text;
   out += "\n \"lines\": ";
   if (pieces.empty()) {
     out += "[]";
@@ -76,6 +97,7 @@ void append_lines(std::string& out, const std::vector<DrawingPiece>& pieces) {
     out += ",\n   \"mesh\": ";
     detail::append_unsigned(out, p.mesh);
     out += p.visible ? ",\n   \"visible\": true\n  }" : ",\n   \"visible\": false\n  }";
+    output.flush_if_full();
   }
   out += "\n ]";
 }
@@ -136,9 +158,10 @@ json view_json(const ViewInfo& v) {
 
 }  // namespace detail
 
-std::string lines_json(const LineDrawing& drawing, const std::function<double()>& write_seconds) {
-  std::string out;
-  out.reserve(4096 + 330 * drawing.pieces.size());  // a piece takes about 300 bytes
+void write_lines_json(const LineDrawing& drawing, const std::function<void(std::string_view)>& sink,
+                      const std::function<double()>& write_seconds) {
+  Output output(sink);
+  std::string& out = output.text;
   // The top level's members in the order of their keys, as dump() writes them.
   out += '{';
   append_member(out, "format", "hlr-lines/1");
@@ -148,7 +171,7 @@ std::string lines_json(const LineDrawing& drawing, const std::function<double()>
   // top level, as in hlr-clip/1 and hlr-surfaces/1
   append_member(out, "kernel", drawing.raster ? "raster" : kernel_name(drawing.kernel));
   out += ',';
-  append_lines(out, drawing.pieces);
+  append_lines(output, drawing.pieces);
   out += ',';
   if (const auto& r = drawing.raster) {
     append_member(out, "raster",
@@ -159,6 +182,13 @@ std::string lines_json(const LineDrawing& drawing, const std::function<double()>
   out += ',';
   append_member(out, "view", detail::view_json(drawing.view));
   out += "\n}\n";
+  output.flush();
+}
+
+std::string lines_json(const LineDrawing& drawing, const std::function<double()>& write_seconds) {
+  std::string out;
+  out.reserve(4096 + 300 * drawing.pieces.size());  // a piece takes 250 to 300 bytes
+  write_lines_json(drawing, [&](std::string_view text) { out += text; }, write_seconds);
   return out;
 }
 

@@ -501,7 +501,7 @@ TEST(LinesJson, BytesAsOneTreeDumpsThem) {
   empty.view.name = "custom";
   EXPECT_EQ(lines_json(empty), lines_json_as_one_tree(empty));
   for (std::uint32_t seed : {1u, 2u, 3u, 4u}) {
-    LineDrawing d = random_drawing(seed, seed == 1 ? 1 : 3000);
+    LineDrawing d = random_drawing(seed, seed == 1 ? 1 : seed == 2 ? 15000 : 3000);  // seed 2: about 4 MB
     if (seed % 2 == 0) {
       d.merged_segments = seed;
       d.merge_distance_mm = 0.01;
@@ -514,6 +514,18 @@ TEST(LinesJson, BytesAsOneTreeDumpsThem) {
     }
     if (seed == 4) d.view.name = "custom";
     const std::string got = lines_json(d), want = lines_json_as_one_tree(d);
+    // Written out as it is made: blocks of about a megabyte, in order, that make the same text.
+    std::vector<std::string> blocks;
+    write_lines_json(d, [&](std::string_view text) { blocks.emplace_back(text); });
+    std::string joined;
+    for (const auto& b : blocks) {
+      joined += b;
+      EXPECT_LE(b.size(), std::size_t(1) << 21);
+    }
+    EXPECT_EQ(joined, got) << "seed " << seed;
+    if (got.size() > (std::size_t(3) << 20)) {
+      EXPECT_GE(blocks.size(), 3u) << "seed " << seed;
+    }
     EXPECT_EQ(got.size(), want.size()) << "seed " << seed;
     const auto mismatch = std::mismatch(got.begin(), got.end(), want.begin(), want.end());
     EXPECT_TRUE(mismatch.first == got.end() && mismatch.second == want.end())

@@ -3,7 +3,8 @@
 //   make_drawing  rounds a LineSet (and its drawing segments) to the orthonormal view frame in
 //                 model units: the one place where the exact result is rounded.
 //   lines_json    the hlr-lines/1 contract (DESIGN.md, docs/FORMATS.md): every piece, visible and
-//                 hidden, with its kind and mesh edge.
+//                 hidden, with its kind and mesh edge (write_lines_json: the same, written out as
+//                 it is made).
 //   sheet_lines   what a sheet shows of a drawing in a style: its scale, the sheet segments
 //                 (sheet_segments: the drawing segments after near-coincident ones are merged at
 //                 the drawing's resolution) and their chains. Worked out once, it is handed to
@@ -29,6 +30,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hlr::exporter {
@@ -169,11 +171,16 @@ struct SheetLines {
 };
 SheetLines sheet_lines(const LineDrawing& drawing, const DrawingStyle& style);
 
-// The hlr-lines/1 document. Its stats.stage_seconds.write is drawing.times.write, or with
-// `write_seconds` what that returns: it is called once, when every piece is written and only the
-// stats and the view are left, so that a caller timing its output stage can count the JSON's own
-// building in it (but not the writing of its bytes to disk). stats.seconds is times.total plus
-// that time: the run from reading to the finished document.
+// The hlr-lines/1 document, handed to `sink` in blocks of about a megabyte as it is made (the
+// document of a large drawing is never held whole; `sink` writes the blocks out, in order). Its
+// stats.stage_seconds.write is drawing.times.write, or with `write_seconds` what that returns: it
+// is called once, when every piece has gone to the sink but the last block and only the stats and
+// the view are left, so that a caller timing its output stage can count the JSON's own making and
+// nearly all of its writing in it. stats.seconds is times.total plus that time: the run from
+// reading the meshes to the (nearly) finished document.
+void write_lines_json(const LineDrawing& drawing, const std::function<void(std::string_view)>& sink,
+                      const std::function<double()>& write_seconds = {});
+// The same document as one string.
 std::string lines_json(const LineDrawing& drawing, const std::function<double()>& write_seconds = {});
 // `sheet` must be sheet_lines(drawing, style); the overloads without it work it out themselves.
 std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& sheet);

@@ -8,6 +8,7 @@
 
 #include <hlr/export/check.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -76,6 +77,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   const double read = seconds_since(start);
   LineRunSettings settings = options.lines;
   settings.progress = scene.input.faces >= 10000;
+  settings.free_at_exit = true;  // the run ends with the outputs
   const Intersections intersections = find_intersections(scene, settings);
   RasterRun raster;
   exporter::LineDrawing drawing;
@@ -87,28 +89,50 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   }
   drawing.times.read = read;
   drawing.times.total += read;
-  // What the SVG and DXF merge, for the JSON's stats and the summary (they merge the same).
-  const exporter::MergedSegments sheet = exporter::sheet_segments(drawing, style);
-  const std::size_t merged = sheet.merged;
+
+  // The output stage (stats.stage_seconds.write): the rounding of the exact drawing, timed in
+  // drawing.times.write, then from here the sheet lines, every output but the JSON, and the JSON
+  // up to its stats. The JSON comes last so that it can count the others; its last block, and the
+  // flushing of every file to disk, come after it and are in the summary's total only.
+  const auto write_start = std::chrono::steady_clock::now();
+  auto write_seconds = [&] { return drawing.times.write + seconds_since(write_start); };
+  // What the SVG and DXF draw, worked out once for both, and what they merge, for the JSON's stats
+  // and the summary (without an SVG or DXF, the merge alone).
+  const bool on_sheet = std::any_of(formats.begin(), formats.end(), [](Format f) {
+    return f == Format::svg || f == Format::dxf;
+  });
+  exporter::SheetLines sheet;
+  if (on_sheet) sheet = exporter::sheet_lines(drawing, style);
+  else sheet.merged = exporter::sheet_segments(drawing, style);
+  const std::size_t merged = sheet.merged.merged;
   drawing.merged_segments = merged;
   drawing.merge_distance_mm = style.merge_distance;
-  drawing.contact_segments = sheet.contact;
+  drawing.contact_segments = sheet.merged.contact;
   drawing.contact_degrees = style.contact_degrees;
   if (settings.progress)
     std::cerr << "hlr: " << merged << " near-coincident drawing segments merged (within " << style.merge_distance
               << " mm on the sheet)\n";
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    switch (formats[i]) {
-      case Format::json: files[i]->write(exporter::lines_json(drawing)); break;
-      case Format::svg: files[i]->write(exporter::lines_svg(drawing, style)); break;
-      case Format::dxf: files[i]->write(exporter::lines_dxf(drawing, style)); break;
-      case Format::png:
-        files[i]->write(exporter::png_document(raster.raster->pbuffer(
-            options.dash == "paper" ? hidden_line::DashPattern::paper : hidden_line::DashPattern::arc_length)));
-        break;
+  for (const bool json : {false, true}) {
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      if ((formats[i] == Format::json) != json) continue;
+      switch (formats[i]) {
+        case Format::json:
+          exporter::write_lines_json(drawing, [&](std::string_view text) { files[i]->write(text); }, write_seconds);
+          break;
+        case Format::svg: files[i]->write(exporter::lines_svg(drawing, style, sheet)); break;
+        case Format::dxf: files[i]->write(exporter::lines_dxf(drawing, style, sheet)); break;
+        case Format::png:
+          files[i]->write(exporter::png_document(raster.raster->pbuffer(
+              options.dash == "paper" ? hidden_line::DashPattern::paper : hidden_line::DashPattern::arc_length)));
+          break;
+      }
     }
   }
   for (auto& file : files) file->commit();
+  const double written = write_seconds();
+  if (settings.progress)
+    std::cerr << "hlr: " << files.size() << (files.size() == 1 ? " output" : " outputs") << " written in " << written
+              << " s; " << drawing.times.total + written << " s in all\n";
 
   const auto& st = drawing.stats;
   auto kind_count = [&](FeatureKind k) { return st.by_kind[static_cast<int>(k)]; };
@@ -124,9 +148,10 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   if (merged > 0)
     std::cout << "  " << merged << " segments merged in the SVG and DXF (lines within " << style.merge_distance
               << " mm of a line drawn already)\n";
-  if (sheet.contact > 0)
-    std::cout << "  " << sheet.contact << " intersection segments left out of the SVG and DXF (surfaces meeting at under "
+  if (sheet.merged.contact > 0)
+    std::cout << "  " << sheet.merged.contact << " intersection segments left out of the SVG and DXF (surfaces meeting at under "
               << style.contact_degrees << " degrees: contact of nearly tangent surfaces)\n";
+  std::cout << "  outputs written in " << written << " s (" << drawing.times.total + written << " s in all)\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
   return kExitOk;
 }

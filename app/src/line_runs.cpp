@@ -16,32 +16,49 @@ hidden_line::LineOptions line_options(const LineRunSettings& settings) {
   return options;
 }
 
+// The exact solution of a view: what the drawing is rounded from.
+template <class K>
+struct Solution {
+  hidden_line::Sources<K> sources;
+  hidden_line::VisibilityMap<K> map;
+  hidden_line::LineSet<K> lines;
+  std::vector<hidden_line::DrawnSegment<K>> segments;
+};
+
 template <class K>
 exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kind, const Intersections& intersections,
                             const LineRunSettings& settings) {
   const ViewFrame<K> frame(view);
   exporter::StageTimes times;
   times.intersections = intersections.seconds;
+  auto solution = std::make_unique<Solution<K>>();
   auto mark = std::chrono::steady_clock::now();
   stage(settings, std::to_string(scene.input.faces) + " faces; building polygons (" + kernel_name(kind) + ")");
-  hidden_line::Sources<K> sources = hidden_line::build_sources<K>(scene.meshes, frame);
+  solution->sources = hidden_line::build_sources<K>(scene.meshes, frame);
   times.sources = seconds_since(mark);
-  stage(settings, "sorting " + std::to_string(sources.polygons.size()) + " polygons");
+  stage(settings, "sorting " + std::to_string(solution->sources.polygons.size()) + " polygons");
   mark = std::chrono::steady_clock::now();
   // A drawing needs only the visible polygons: what the front pieces hide is not kept.
-  const hidden_line::VisibilityMap<K> map = hidden_line::area_sort<K>(sources, {.keep_hidden = false});
+  solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false});
   times.sort = seconds_since(mark);
   stage(settings, "classifying feature lines");
   mark = std::chrono::steady_clock::now();
-  const hidden_line::LineSet<K> lines =
-      hidden_line::classify_lines<K>(scene.meshes, frame, sources, map, intersections.segments, line_options(settings));
+  solution->lines = hidden_line::classify_lines<K>(scene.meshes, frame, solution->sources, solution->map,
+                                                   intersections.segments, line_options(settings));
   times.lines = seconds_since(mark);
   mark = std::chrono::steady_clock::now();
-  const auto segments = hidden_line::drawing_segments<K>(lines);
+  solution->segments = hidden_line::drawing_segments<K>(solution->lines);
   times.precedence = seconds_since(mark);
   times.total = times.intersections + times.sources + times.sort + times.lines + times.precedence;
 
-  exporter::LineDrawing drawing = exporter::make_drawing<K>(scene.input, frame, kind, lines, segments);
+  // The output stage starts here: the one rounding of the exact result, then the exact solution
+  // freed (or left to the process's exit: see LineRunSettings).
+  mark = std::chrono::steady_clock::now();
+  exporter::LineDrawing drawing =
+      exporter::make_drawing<K>(scene.input, frame, kind, solution->lines, solution->segments);
+  if (settings.free_at_exit) (void)solution.release();  // not a leak: see LineRunSettings::free_at_exit
+  else solution.reset();
+  times.write = seconds_since(mark);
   drawing.crease_degrees = settings.crease;
   drawing.times = times;
   return drawing;
@@ -93,7 +110,9 @@ RasterRun raster_drawing(const Scene& scene, const View& view, int resolution, c
   const hidden_line::LineSet<DoubleKernel> lines = run.raster->classify();
   times.lines = seconds_since(mark);
   times.total = times.intersections + zbuffer + times.lines;
+  mark = std::chrono::steady_clock::now();
   run.drawing = exporter::make_raster_drawing(scene.input, *run.raster, lines, resolution);
+  times.write = seconds_since(mark);
   run.drawing.crease_degrees = settings.crease;
   run.drawing.times = times;
   run.drawing.zbuffer_seconds = zbuffer;

@@ -17,7 +17,8 @@
 #   feature_lines    stats.lines: feature lines hlr found (silhouette, crease, boundary, group,
 #                    intersection), before splitting into visible and hidden pieces
 #   hlr_s            stats.seconds (total: read + sources + sort + intersections + lines +
-#                    precedence; not writing the file), minimum over HLR_REPEAT runs, or "failed"
+#                    precedence + write, the output stage up to the JSON's stats; older hlr builds
+#                    have no write stage), minimum over HLR_REPEAT runs, or "failed"
 #                    (non-zero exit or timeout)
 #   hlr_lines_s      stats.stage_seconds.lines of that run: classifying the feature lines into
 #                    visible and hidden pieces only. (Before the stage split, at 74750b5, "lines"
@@ -42,8 +43,8 @@
 #                    world units (the same frame and scale as hlr's)
 #   vis_len_ratio    hlr_vis_len / lineart_vis_len; hid_len_ratio = hlr_hid_len / lineart_hid_len
 #                    ("n/a" when a side is missing or the peer's length is 0)
-# It also prints hlr's stage split (read / sources / sort / intersections / lines / precedence)
-# per case and summed.
+# It also prints hlr's stage split (read / sources / sort / intersections / lines / precedence /
+# write) per case and summed.
 #
 # env:
 #   VIEWS    comma list of views                 (default front,top,right,iso)
@@ -116,7 +117,7 @@ def num(x):
 cols = ["mesh", "view", "faces", "feature_lines", "hlr_s", "hlr_lines_s", "hlr_intersections_s",
         "hlr_precedence_s", "lineart_s", "ratio", "hlr_vis_len", "hlr_hid_len", "hlr_hid_len_all",
         "lineart_vis_len", "lineart_hid_len", "vis_len_ratio", "hid_len_ratio"]
-stages = ["read", "sources", "sort", "intersections", "lines", "precedence"]
+stages = ["read", "sources", "sort", "intersections", "lines", "precedence", "write"]
 
 def stage(ex, s):
     if not ex:
@@ -131,7 +132,7 @@ with open(out, "w", newline="") as f:
     w = csv.writer(f)
     w.writerow(cols)
     print("\n" + fmt % tuple(c[:10] for c in cols)
-          + " | stages: read/sources/sort/intersections/lines/precedence")
+          + " | stages: read/sources/sort/intersections/lines/precedence/write")
     for key in order:
         ex = hlr[key].get("exact")
         pr = peer.get(key)

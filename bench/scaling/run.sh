@@ -23,13 +23,15 @@
 #   size, assembly, faces, copies, view, load1 (1-minute load average before the case),
 #   feature_lines        stats.lines of hlr's JSON
 #   hlr_s                stats.seconds: read + sources + sort + intersections + lines + precedence
-#                        (not writing the file), least of HLR_REPEAT runs, or "failed"
+#                        + write (the output stage up to the JSON's stats; older hlr builds have
+#                        no write stage), least of HLR_REPEAT runs, or "failed"
 #   hlr_status           ok, timeout, or how the run ended ("exited_with_non-zero_status_1",
 #                        "terminated_by_signal_11", as /usr/bin/time saw it)
 #   hlr_cpu_s            user + system CPU seconds of the whole hlr process (least over the
 #                        repeats; includes start-up and writing the JSON): with 1 thread, far
 #                        below hlr_s only when the machine was busy with something else
-#   hlr_read_s ... hlr_precedence_s   stats.stage_seconds of that run, per stage
+#   hlr_read_s ... hlr_write_s   stats.stage_seconds of that run, per stage (empty where the
+#                        hlr build lacks the stage)
 #   hlr_peak_kb          peak resident set of the hlr process (largest over the repeats), KiB;
 #                        for a failed run, the peak until it ended
 #   hlr_bytes_per_face   hlr_peak_kb * 1024 / faces (the whole process, start-up included)
@@ -181,7 +183,7 @@ from common import load_hlr, load_peer, sec
 rows_tsv, cases_tsv, work, out = sys.argv[1:5]
 _, hlr = load_hlr(rows_tsv)     # (assembly, view) -> {"exact": best stats or None}
 peer = load_peer(work)          # (assembly, view) -> Line Art row
-stages = ["read", "sources", "sort", "intersections", "lines", "precedence"]
+stages = ["read", "sources", "sort", "intersections", "lines", "precedence", "write"]
 
 def timed(path):
     """The runs /usr/bin/time wrote to path: (peak KiB, wall s, CPU s = user + system) each,

@@ -1,5 +1,5 @@
 // The parts every JSON document of hlr writes alike: "input" and "view" (DESIGN.md, hlr-lines/1).
-// Defined in lines_writers.cpp.
+// Defined in lines_json.cpp.
 #pragma once
 
 #include <hlr/export/surfaces.hpp>

@@ -1,7 +1,19 @@
 // make_drawing as a template over the kernel; included only by instantiate_*.cpp.
+//
+// Rounding is most of an exact drawing's output stage: every piece end and every drawing segment
+// end is an exact number whose nearest double takes an exact evaluation (GMP) the first time.
+// So lines and segments are rounded in parallel (oneTBB, as line classification: Epeck's lazy
+// numbers may be evaluated from several threads), each into its own place, so that the drawing
+// does not depend on the number of threads; and on the exact kernel a piece end equal to an end
+// of its line (t = 0 or 1, known from the interval of t) is that end, and a piece that starts
+// where the one before it ends (the same number) starts at that rounded point. Both give the
+// same double as the general formula, without the arithmetic: the exact value is the same.
 #pragma once
 
 #include <hlr/export/lines.hpp>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace hlr::exporter {
 
@@ -17,32 +29,67 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   d.view = view_info(frame);
   d.kernel = kernel;
   d.stats = lines.stats;
-  for (std::uint32_t index = 0; index < lines.lines.size(); ++index) {
-    const auto& line = lines.lines[index];
-    auto at = [&](const FT& t) -> Point3 {
-      return {frame.rounded(line.a.x + t * (line.b.x - line.a.x), 0),
-              frame.rounded(line.a.y + t * (line.b.y - line.a.y), 1),
-              frame.rounded(line.a.z + t * (line.b.z - line.a.z), 2)};
-    };
-    for (const auto& piece : line.pieces) {
-      DrawingPiece p;
-      p.a = at(piece.t0);
-      p.b = at(piece.t1);
-      p.visible = piece.visible;
-      p.kind = line.kind;
-      p.mesh = line.mesh;
-      p.has_edge = line.kind != FeatureKind::intersection;
-      p.edge = {line.v0, line.v1};
-      p.line = index;
-      p.t0 = Geometry<K>::to_double(piece.t0);
-      p.t1 = Geometry<K>::to_double(piece.t1);
-      d.pieces.push_back(p);
+
+  // Line i's pieces go to d.pieces[first[i], first[i + 1]).
+  std::vector<std::size_t> first(lines.lines.size() + 1, 0);
+  for (std::size_t i = 0; i < lines.lines.size(); ++i) first[i + 1] = first[i] + lines.lines[i].pieces.size();
+  d.pieces.resize(first.back());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, lines.lines.size(), 64), [&](const auto& range) {
+    for (std::size_t index = range.begin(); index != range.end(); ++index) {
+      const auto& line = lines.lines[index];
+      if (line.pieces.empty()) continue;
+      auto end_point = [&](const ViewPoint<K>& p) -> Point3 {
+        return {frame.rounded(p.x, 0), frame.rounded(p.y, 1), frame.rounded(p.z, 2)};
+      };
+      std::optional<std::array<FT, 3>> delta;  // b - a, made once per line where an inner point needs it
+      auto at = [&](const FT& t) -> Point3 {
+        if constexpr (G::exact_constructions) {
+          const auto [lo, hi] = CGAL::to_interval(t);
+          if (lo == hi && lo == 0) return end_point(line.a);
+          if (lo == hi && lo == 1) return end_point(line.b);
+          if (!delta) delta = {line.b.x - line.a.x, line.b.y - line.a.y, line.b.z - line.a.z};
+          return {frame.rounded(line.a.x + t * (*delta)[0], 0), frame.rounded(line.a.y + t * (*delta)[1], 1),
+                  frame.rounded(line.a.z + t * (*delta)[2], 2)};
+        } else {
+          return {frame.rounded(line.a.x + t * (line.b.x - line.a.x), 0),
+                  frame.rounded(line.a.y + t * (line.b.y - line.a.y), 1),
+                  frame.rounded(line.a.z + t * (line.b.z - line.a.z), 2)};
+        }
+      };
+      DrawingPiece* out = &d.pieces[first[index]];
+      for (std::size_t k = 0; k < line.pieces.size(); ++k) {
+        const auto& piece = line.pieces[k];
+        DrawingPiece& p = out[k];
+        bool shared = false;
+        if constexpr (G::exact_constructions) shared = k > 0 && CGAL::identical(piece.t0, line.pieces[k - 1].t1);
+        if (shared) {
+          p.a = out[k - 1].b;
+          p.t0 = out[k - 1].t1;
+        } else {
+          p.a = at(piece.t0);
+          p.t0 = G::to_double(piece.t0);
+        }
+        p.b = at(piece.t1);
+        p.t1 = G::to_double(piece.t1);
+        p.visible = piece.visible;
+        p.kind = line.kind;
+        p.mesh = line.mesh;
+        p.has_edge = line.kind != FeatureKind::intersection;
+        p.edge = {line.v0, line.v1};
+        p.line = std::uint32_t(index);
+      }
     }
-  }
-  for (const auto& s : segments)
-    d.segments.push_back({{frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)},
-                          {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)},
-                          s.visible, s.mesh, s.meeting_degrees});
+  });
+
+  d.segments.resize(segments.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, segments.size(), 256), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const auto& s = segments[i];
+      d.segments[i] = {{frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)},
+                       {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)},
+                       s.visible, s.mesh, s.meeting_degrees};
+    }
+  });
   return d;
 }
 

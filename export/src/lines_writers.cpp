@@ -1,6 +1,7 @@
 // The kernel-independent writers of hlr/export/lines.hpp: the sheet and its scale, chaining of the
-// drawing segments into polylines, and the hlr-lines/1 JSON, SVG and DXF documents. Everything here
-// works on plain doubles; the one rounding of the exact result happened in make_drawing.
+// drawing segments into polylines, and the SVG and DXF documents (the hlr-lines/1 JSON is in
+// lines_json.cpp). Everything here works on plain doubles; the one rounding of the exact result
+// happened in make_drawing.
 //
 // Line styles after ISO 128-20 (line types 01 and 02) in the 0.5 mm line group:
 //   visible  continuous wide line, 0.5 mm;
@@ -15,23 +16,19 @@
 // round-trip numbers), and the HEADER section is written once the last handle is known.
 #include <hlr/export/lines.hpp>
 
-#include "document_json.hpp"
+#include "numbers.hpp"
 
 #include <dl_dxf.h>
 #include <dl_writer_ascii.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <map>
-#include <sstream>
+#include <string_view>
 
 namespace hlr::exporter {
 namespace {
-
-using nlohmann::json;
 
 // ---------------------------------------------------------------------------------------------
 // Sheet layout (millimetres, SVG axes: origin top left, y down).
@@ -92,32 +89,31 @@ std::optional<Box> drawn_bounds(const LineDrawing& drawing, const DrawingStyle& 
 // ---------------------------------------------------------------------------------------------
 // Numbers.
 
-// Fixed notation with at most `decimals` decimals, trailing zeros trimmed, no "-0".
-// std::to_chars: independent of the C locale.
-std::string fixed(double v, int decimals) {
-  char buf[400];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-  std::string s(buf, ec == std::errc() ? end : buf);
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.') s.pop_back();
+// A document's text, appended to in place; numbers through numbers.hpp, so that no number makes a
+// stream or a string of its own.
+struct Text {
+  std::string s;
+  Text& operator<<(std::string_view v) {
+    s += v;
+    return *this;
   }
-  if (s == "-0") s = "0";
-  return s;
-}
+  Text& operator<<(char c) {
+    s += c;
+    return *this;
+  }
+};
 
 // Sheet millimetres: 0.1 µm is below anything a plotter or a viewer shows.
-std::string mm(double v) { return fixed(v, 4); }
-
-// Shortest text that reads back as the same double, in fixed notation (DXF readers differ on
-// exponents), with a decimal point as DXF writers customarily give one.
-std::string round_trip(double v) {
-  char buf[400];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
-  std::string s(buf, ec == std::errc() ? end : buf);
-  if (s.find('.') == std::string::npos) s += ".0";
-  return s;
+struct Mm {
+  double v;
+};
+Mm mm(double v) { return {v}; }
+Text& operator<<(Text& out, Mm v) {
+  detail::append_fixed(out.s, v.v, 4);
+  return out;
 }
+
+using detail::fixed;
 
 // "1:5", "2:1", "1:2.5".
 std::string scale_label(double scale) {
@@ -163,25 +159,38 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
   std::vector<const DrawingSegment*> mine;  // this class's segments of non-zero length, in input order
   for (const auto& s : segments)
     if (s.visible == visible && s.a != s.b) mine.push_back(&s);
-  // Exact equality of endpoints: -0.0 and 0.0 compare equal, as they should.
-  using End = std::pair<std::uint32_t, Point2>;  // mesh, point
-  std::map<End, std::vector<std::size_t>> ending_at;
-  for (std::size_t i = 0; i < mine.size(); ++i) {
-    ending_at[{mine[i]->mesh, mine[i]->a}].push_back(i);
-    ending_at[{mine[i]->mesh, mine[i]->b}].push_back(i);
+  // The segments' ends, end 2i being mine[i]'s a and 2i + 1 its b, grouped by mesh and point:
+  // sorted stably, so that a point's ends stay in segment order. Exact equality of endpoints:
+  // -0.0 and 0.0 are one point, as they should be.
+  const std::size_t end_count = 2 * mine.size();
+  auto point = [&](std::uint32_t end) -> const Point2& { return end % 2 ? mine[end / 2]->b : mine[end / 2]->a; };
+  auto before = [&](std::uint32_t e, std::uint32_t f) {
+    const std::uint32_t me = mine[e / 2]->mesh, mf = mine[f / 2]->mesh;
+    return me != mf ? me < mf : point(e) < point(f);
+  };
+  std::vector<std::uint32_t> ends(end_count);
+  for (std::uint32_t e = 0; e < end_count; ++e) ends[e] = e;
+  std::stable_sort(ends.begin(), ends.end(), before);
+  // The ends at the point of end e are ends[first[at[e]], first[at[e] + 1]).
+  std::vector<std::uint32_t> at(end_count), first;
+  for (std::size_t k = 0; k < end_count; ++k) {
+    if (k == 0 || before(ends[k - 1], ends[k])) first.push_back(std::uint32_t(k));
+    at[ends[k]] = std::uint32_t(first.size() - 1);
   }
+  first.push_back(std::uint32_t(end_count));
+  auto degree = [&](std::uint32_t end) { return first[at[end] + 1] - first[at[end]]; };
+
   std::vector<bool> used(mine.size(), false);
-  auto other_end = [&](std::size_t i, const Point2& p) { return mine[i]->a == p ? mine[i]->b : mine[i]->a; };
-  // Walks on from `end`, arrived at along segment `via`, through points of degree two.
-  auto walk = [&](Point2 end, std::size_t via, std::vector<Point2>& points) {
+  // Walks on from `end` (an end of segment `via`) through points of degree two.
+  auto walk = [&](std::uint32_t end, std::size_t via, std::vector<Point2>& points) {
     for (;;) {
-      const auto& incident = ending_at.find({mine[via]->mesh, end})->second;
-      if (incident.size() != 2) return;
-      const std::size_t next = incident[0] == via ? incident[1] : incident[0];
+      if (degree(end) != 2) return;
+      const std::uint32_t* incident = &ends[first[at[end]]];
+      const std::size_t next = incident[0] / 2 == via ? incident[1] / 2 : incident[0] / 2;
       if (used[next]) return;
       used[next] = true;
-      end = other_end(next, end);
-      points.push_back(end);
+      end = mine[next]->a == point(end) ? std::uint32_t(2 * next + 1) : std::uint32_t(2 * next);  // its other end
+      points.push_back(point(end));
       via = next;
     }
   };
@@ -194,16 +203,15 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
     chain.visible = visible;
     chain.mesh = mine[seed]->mesh;
     chain.points = {mine[seed]->a, mine[seed]->b};
-    walk(mine[seed]->b, seed, chain.points);
+    walk(std::uint32_t(2 * seed + 1), seed, chain.points);
     const Point2 start = chain.points.front();
-    if (chain.points.size() > 2 && chain.points.back() == start &&
-        ending_at.find({chain.mesh, start})->second.size() == 2) {
+    if (chain.points.size() > 2 && chain.points.back() == start && degree(std::uint32_t(2 * seed)) == 2) {
       chain.points.pop_back();  // went round a loop
       chain.closed = true;
     } else {
-      std::vector<Point2> before;
-      walk(start, seed, before);
-      chain.points.insert(chain.points.begin(), before.rbegin(), before.rend());
+      std::vector<Point2> back;
+      walk(std::uint32_t(2 * seed), seed, back);
+      chain.points.insert(chain.points.begin(), back.rbegin(), back.rend());
     }
     chains.push_back(std::move(chain));
   }
@@ -213,7 +221,7 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
 // ---------------------------------------------------------------------------------------------
 // SVG.
 
-void svg_title_block(std::ostringstream& out, const LineDrawing& drawing, const SheetLayout& l, double scale) {
+void svg_title_block(Text& out, const LineDrawing& drawing, const SheetLayout& l, double scale) {
   const Box& t = l.title;
   const double view_width = 70, scale_width = 50;  // the bottom row's cells; "hlr" takes the rest
   out << "<g id=\"title-block\" fill=\"none\" stroke=\"#000\" stroke-width=\"" << mm(ruling_width) << "\">\n"
@@ -250,7 +258,7 @@ void svg_title_block(std::ostringstream& out, const LineDrawing& drawing, const 
 
 // The ISO 5457 frame and centring marks (from the sheet edge to 5 mm inside the frame; the bottom
 // one stops at the frame where the title block lies under it).
-void svg_frame(std::ostringstream& out, const Sheet& sheet, const SheetLayout& l) {
+void svg_frame(Text& out, const Sheet& sheet, const SheetLayout& l) {
   const Box& f = l.frame;
   const double mx = sheet.width_mm / 2, my = sheet.height_mm / 2;
   const double bottom_mark_end = mx >= l.title.x0 ? f.y1 : f.y1 - 5;
@@ -312,26 +320,6 @@ std::vector<DrawingPolyline> chain_segments(const std::vector<DrawingSegment>& s
   return chains;
 }
 
-namespace detail {
-
-json input_json(const InputInfo& input) {
-  return {{"files", input.files}, {"faces", input.faces}, {"vertices", input.vertices}};
-}
-
-json view_json(const ViewInfo& v) {
-  json view;
-  view["projection"] = "orthographic";
-  if (v.name != "custom") view["name"] = v.name;
-  view["direction"] = {v.direction[0], v.direction[1], v.direction[2]};
-  view["up"] = {v.up[0], v.up[1], v.up[2]};
-  json matrix = json::array();
-  for (const auto& row : v.world_to_view) matrix.push_back({row[0], row[1], row[2], row[3]});
-  view["world_to_view"] = std::move(matrix);
-  return view;
-}
-
-}  // namespace detail
-
 double LineDrawing::length(bool visible) const {
   double sum = 0;
   for (const auto& seg : segments)
@@ -339,76 +327,17 @@ double LineDrawing::length(bool visible) const {
   return sum;
 }
 
-std::string lines_json(const LineDrawing& drawing) {
-  json out;
-  out["format"] = "hlr-lines/1";
-  out["input"] = detail::input_json(drawing.input);
-  out["view"] = detail::view_json(drawing.view);
-  // top level, as in hlr-clip/1 and hlr-surfaces/1
-  out["kernel"] = drawing.raster ? "raster" : kernel_name(drawing.kernel);
-  if (const auto& r = drawing.raster)
-    out["raster"] = {{"resolution", r->resolution}, {"width", r->width}, {"height", r->height}, {"pixel", r->pixel}};
-
-  json lines = json::array();
-  for (const auto& p : drawing.pieces) {
-    json line;
-    line["a"] = {p.a[0], p.a[1], p.a[2]};
-    line["b"] = {p.b[0], p.b[1], p.b[2]};
-    line["visible"] = p.visible;
-    line["kind"] = feature_kind_name(p.kind);
-    line["mesh"] = p.mesh;
-    // Intersection lines lie on no mesh edge (DESIGN.md): null, whatever the piece says.
-    if (p.has_edge && p.kind != FeatureKind::intersection)
-      line["edge"] = {p.edge[0], p.edge[1]};
-    else
-      line["edge"] = nullptr;
-    lines.push_back(std::move(line));
-  }
-  out["lines"] = std::move(lines);
-
-  const auto& s = drawing.stats;
-  json by_kind = json::object();
-  for (auto kind : {FeatureKind::silhouette, FeatureKind::crease, FeatureKind::boundary, FeatureKind::intersection,
-                    FeatureKind::group})
-    by_kind[feature_kind_name(kind)] = s.by_kind[static_cast<std::size_t>(kind)];
-  const StageTimes& t = drawing.times;
-  const json stages =
-      drawing.raster ? json{{"read", t.read}, {"intersections", t.intersections}, {"zbuffer", drawing.zbuffer_seconds},
-                            {"lines", t.lines}}
-                     : json{{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"intersections", t.intersections},
-                            {"lines", t.lines}, {"precedence", t.precedence}};
-  out["stats"] = {
-      {"seconds", t.total},
-      {"stage_seconds", stages},
-      {"lines", s.lines},
-      {"lines_by_kind", std::move(by_kind)},
-      {"lines_seen_end_on", s.point_in_view},
-      {"visible_pieces", s.visible_pieces},
-      {"hidden_pieces", s.hidden_pieces},
-      {"drawn_visible_length", drawing.visible_length()},
-      {"drawn_hidden_length", drawing.hidden_length()},
-      {"crease_degrees", drawing.crease_degrees},
-      {"welded_vertices", drawing.input.welded_vertices},
-  };
-  if (drawing.merged_segments) {
-    out["stats"]["merged_segments"] = *drawing.merged_segments;
-    out["stats"]["merge_distance_mm"] = drawing.merge_distance_mm;
-    out["stats"]["contact_segments"] = drawing.contact_segments;
-    out["stats"]["contact_degrees"] = drawing.contact_degrees;
-  }
-  return out.dump(1) + "\n";
-}
-
-std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
+std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& lines) {
   const Sheet& sheet = style.sheet;
   const SheetLayout l = layout_of(sheet);
-  const double scale = drawing_scale(drawing, style);
+  const double scale = lines.scale;
   const Box bounds = drawn_bounds(drawing, style).value_or(Box{});
   // The drawing's centre on the area's centre; view y up, sheet y down.
   auto sheet_x = [&](double x) { return l.area.cx() + (x - bounds.cx()) * scale; };
   auto sheet_y = [&](double y) { return l.area.cy() - (y - bounds.cy()) * scale; };
 
-  std::ostringstream out;
+  Text out;
+  out.s.reserve(4096 + 32 * drawing.segments.size());
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << mm(sheet.width_mm) << "mm\" height=\""
       << mm(sheet.height_mm) << "mm\" viewBox=\"0 0 " << mm(sheet.width_mm) << ' ' << mm(sheet.height_mm) << "\">\n"
@@ -420,7 +349,7 @@ std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
   // Each part's lines in a group of its own inside the class's group, so that a part can be
   // switched off: ids are unique ("part-NAME-visible", "part-NAME-hidden"), the class names the
   // part in both.
-  const auto chains = chain_segments(sheet_segments(drawing, style).segments);
+  const auto& chains = lines.chains;
   const auto names = part_names(drawing);
   auto group = [&](bool visible) {
     if (visible)
@@ -449,7 +378,7 @@ std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
   if (style.hidden) group(false);  // below the visible lines
   group(true);
   out << "</svg>\n";
-  return out.str();
+  return std::move(out.s);
 }
 
 namespace {
@@ -459,37 +388,54 @@ namespace {
 class DxfText : public DL_WriterA {
  public:
   DxfText() : DL_WriterA("", DL_Codes::AC1015) {}
-  std::string text() const { return out_.str(); }
+  std::string& text() { return out_; }
 
-  void dxfReal(int gc, double value) const override { group(gc, round_trip(value)); }
-  void dxfInt(int gc, int value) const override { group(gc, std::to_string(value)); }
+  void dxfReal(int gc, double value) const override {
+    code(gc);
+    detail::append_round_trip(out_, value);
+    out_ += '\n';
+  }
+  void dxfInt(int gc, int value) const override {
+    char buf[16];
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
+    group(gc, std::string_view(buf, std::size_t(end - buf)));
+  }
   void dxfHex(int gc, int value) const override {
     char buf[16];
     auto [end, ec] = std::to_chars(buf, buf + sizeof buf, static_cast<unsigned>(value), 16);
-    std::string hex(buf, end);
-    for (char& c : hex) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    group(gc, hex);
+    for (char* c = buf; c != end; ++c) *c = static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+    group(gc, std::string_view(buf, std::size_t(end - buf)));
   }
   void dxfString(int gc, const char* value) const override { group(gc, value); }
   void dxfString(int gc, const std::string& value) const override { group(gc, value); }
 
  private:
   // Group codes right-aligned in three columns, as DXF writers customarily do.
-  void group(int gc, const std::string& value) const {
-    out_ << (gc < 10 ? "  " : gc < 100 ? " " : "") << gc << '\n' << value << '\n';
+  void code(int gc) const {
+    out_ += gc < 10 ? "  " : gc < 100 ? " " : "";
+    char buf[16];
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, gc);
+    out_.append(buf, std::size_t(end - buf));
+    out_ += '\n';
   }
-  mutable std::ostringstream out_;
+  void group(int gc, std::string_view value) const {
+    code(gc);
+    out_ += value;
+    out_ += '\n';
+  }
+  mutable std::string out_;
 };
 
 }  // namespace
 
-std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
-  const double scale = drawing_scale(drawing, style);
+std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& lines) {
+  const double scale = lines.scale;
   const Box bounds = drawn_bounds(drawing, style).value_or(Box{});
   const std::string hidden_ltype = "HIDDEN";
   // Everything after the HEADER first, so that $HANDSEED can name the next free handle.
   DL_Dxf dxf;  // writes R2000 (AC1015) unless told otherwise
   DxfText body;
+  body.text().reserve(8192 + 64 * drawing.segments.size());
   body.sectionTables();
   dxf.writeVPort(body);
 
@@ -548,14 +494,15 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
 
   // Hidden first, so that viewers drawing in file order put the visible lines on top.
   body.sectionEntities();
-  auto chains = chain_segments(sheet_segments(drawing, style).segments);
-  std::stable_partition(chains.begin(), chains.end(), [](const DrawingPolyline& c) { return !c.visible; });
-  for (const auto& c : chains) {
-    if (!c.visible && !style.hidden) continue;
-    dxf.writePolyline(body, DL_PolylineData(static_cast<int>(c.points.size()), 0, 0, c.closed ? 1 : 0),
-                      DL_Attributes(layer(c.mesh, c.visible), 256, -1, "BYLAYER", 1.0));
-    for (const Point2& p : c.points) dxf.writeVertex(body, DL_VertexData(p[0], p[1], 0.0, 0.0));
-    dxf.writePolylineEnd(body);
+  for (const bool visible : {false, true}) {
+    if (!visible && !style.hidden) continue;
+    for (const auto& c : lines.chains) {
+      if (c.visible != visible) continue;
+      dxf.writePolyline(body, DL_PolylineData(static_cast<int>(c.points.size()), 0, 0, c.closed ? 1 : 0),
+                        DL_Attributes(layer(c.mesh, c.visible), 256, -1, "BYLAYER", 1.0));
+      for (const Point2& p : c.points) dxf.writeVertex(body, DL_VertexData(p[0], p[1], 0.0, 0.0));
+      dxf.writePolylineEnd(body);
+    }
   }
   body.sectionEnd();
   dxf.writeObjects(body);
@@ -586,7 +533,17 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
   header.dxfReal(20, bounds.y1);
   header.dxfReal(30, 0.0);
   header.sectionEnd();
-  return header.text() + body.text();
+  std::string text = std::move(header.text());
+  text += body.text();
+  return text;
+}
+
+std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style) {
+  return lines_svg(drawing, style, sheet_lines(drawing, style));
+}
+
+std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style) {
+  return lines_dxf(drawing, style, sheet_lines(drawing, style));
 }
 
 }  // namespace hlr::exporter

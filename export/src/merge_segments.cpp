@@ -39,7 +39,9 @@ double distance_to_segment(const Point2& x, const Point2& a, const Point2& b) {
 }
 
 // Segment ids in a uniform grid of square cells; a segment is listed in every cell within
-// `widen` of it. A filter only: the cover test below decides.
+// `widen` of it. A filter only: the cover test below decides. Each cell's list is a chain through
+// one array of entries, in the order of insertion (no container per cell: a large drawing has
+// millions of cells).
 class SegmentGrid {
  public:
   SegmentGrid(const std::vector<DrawingSegment>& segments, double widen) : widen_(widen) {
@@ -60,11 +62,19 @@ class SegmentGrid {
     cell_ = cell;
     nx_ = std::clamp<long>(long(w / cell) + 1, 1, 4096);
     ny_ = std::clamp<long>(long(h / cell) + 1, 1, 4096);
-    cells_.resize(std::size_t(nx_ * ny_));
+    first_.assign(std::size_t(nx_ * ny_), none);
+    last_.assign(std::size_t(nx_ * ny_), none);
+    entries_.reserve(4 * segments.size());
   }
 
   void insert(std::uint32_t id, const DrawingSegment& s) {
-    for_cells(s, [&](std::vector<std::uint32_t>& cell) { cell.push_back(id); });
+    for_cells(s, [&](std::size_t cell) {
+      const auto entry = std::uint32_t(entries_.size());
+      entries_.push_back({id, none});
+      if (last_[cell] == none) first_[cell] = entry;
+      else entries_[last_[cell]].next = entry;
+      last_[cell] = entry;
+    });
     if (id >= stamp_.size()) stamp_.resize(id + 1, 0);
   }
 
@@ -72,8 +82,9 @@ class SegmentGrid {
   template <class Visit>
   void query(const DrawingSegment& s, Visit&& visit) {
     ++round_;
-    for_cells(s, [&](std::vector<std::uint32_t>& cell) {
-      for (std::uint32_t id : cell) {
+    for_cells(s, [&](std::size_t cell) {
+      for (std::uint32_t e = first_[cell]; e != none; e = entries_[e].next) {
+        const std::uint32_t id = entries_[e].id;
         if (stamp_[id] == round_) continue;
         stamp_[id] = round_;
         visit(id);
@@ -82,6 +93,11 @@ class SegmentGrid {
   }
 
  private:
+  static constexpr std::uint32_t none = ~std::uint32_t(0);
+  struct Entry {
+    std::uint32_t id, next;
+  };
+
   template <class Each>
   void for_cells(const DrawingSegment& s, Each&& each) {
     auto index = [&](double v, double lo, long n) {
@@ -97,13 +113,14 @@ class SegmentGrid {
     for (long y = cy0; y <= cy1; ++y)
       for (long x = cx0; x <= cx1; ++x) {
         const Point2 centre{x0_ + (double(x) + 0.5) * cell_, y0_ + (double(y) + 0.5) * cell_};
-        if (one_cell || distance_to_segment(centre, s.a, s.b) <= reach) each(cells_[std::size_t(y * nx_ + x)]);
+        if (one_cell || distance_to_segment(centre, s.a, s.b) <= reach) each(std::size_t(y * nx_ + x));
       }
   }
 
   double widen_, x0_ = 0, y0_ = 0, cell_ = 1;
   long nx_ = 1, ny_ = 1;
-  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<std::uint32_t> first_, last_;  // per cell: its first and last entry, or none
+  std::vector<Entry> entries_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t round_ = 0;
 };
@@ -165,18 +182,22 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
 
   SegmentGrid grid(segments, distance);
   std::vector<DrawingSegment> kept;
-  std::vector<std::vector<std::uint32_t>> pieces_of(segments.size());  // indices into `kept`
-  std::vector<Cover> covers;
+  kept.reserve(segments.size());
+  // The pieces kept of segment i are kept[pieces_of[i].first, pieces_of[i].second): a segment's
+  // pieces are kept one after the other, while it is the one being merged.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces_of(segments.size());
+  std::vector<Cover> covers, runs;
   for (const std::uint32_t i : order) {
     const DrawingSegment& s = segments[i];
+    pieces_of[i] = {std::uint32_t(kept.size()), std::uint32_t(kept.size())};
     covers.clear();
     grid.query(s, [&](std::uint32_t k) {
       if (auto c = cover_of(s, kept[k], distance)) covers.push_back(*c);
     });
     auto keep = [&](const DrawingSegment& piece) {
       grid.insert(std::uint32_t(kept.size()), piece);
-      pieces_of[i].push_back(std::uint32_t(kept.size()));
       kept.push_back(piece);
+      pieces_of[i].second = std::uint32_t(kept.size());
     };
     // Covers joined into runs where the gap between them is below the distance (such a gap is a
     // sliver of the same line). A run shorter than the distance is no overlap but two lines
@@ -185,7 +206,7 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     std::sort(covers.begin(), covers.end(), [](const Cover& x, const Cover& y) {
       return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi;
     });
-    std::vector<Cover> runs;
+    runs.clear();
     for (const Cover& c : covers) {
       if (!runs.empty() && c.lo <= runs.back().hi + distance) {
         if (c.hi > runs.back().hi) runs.back().hi = c.hi, runs.back().at_hi = c.at_hi;
@@ -215,23 +236,40 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     }
     if (from < len) piece(len, s.b);
   }
-  for (const auto& list : pieces_of)
-    for (std::uint32_t k : list) out.segments.push_back(kept[k]);
+  out.segments.reserve(kept.size());
+  for (const auto& [first, end] : pieces_of)
+    for (std::uint32_t k = first; k < end; ++k) out.segments.push_back(kept[k]);
   return out;
 }
 
-MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style) {
+namespace {
+
+MergedSegments sheet_segments_at(const LineDrawing& drawing, const DrawingStyle& style, double scale) {
   std::vector<DrawingSegment> drawn;
+  drawn.reserve(drawing.segments.size());
   std::size_t contact = 0;
   for (const auto& s : drawing.segments) {
     if (!s.visible && !style.hidden) continue;
     if (s.meeting_degrees < style.contact_degrees) ++contact;
     else drawn.push_back(s);
   }
-  const double scale = drawing_scale(drawing, style);
   MergedSegments out = merge_segments(drawn, style.merge_distance / scale);
   out.contact = contact;
   return out;
+}
+
+}  // namespace
+
+MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style) {
+  return sheet_segments_at(drawing, style, drawing_scale(drawing, style));
+}
+
+SheetLines sheet_lines(const LineDrawing& drawing, const DrawingStyle& style) {
+  SheetLines sheet;
+  sheet.scale = drawing_scale(drawing, style);
+  sheet.merged = sheet_segments_at(drawing, style, sheet.scale);
+  sheet.chains = chain_segments(sheet.merged.segments);
+  return sheet;
 }
 
 std::vector<std::string> part_names(const LineDrawing& drawing) {

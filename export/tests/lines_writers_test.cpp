@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <random>
 #include <set>
@@ -192,6 +193,92 @@ TEST(Chaining, Deterministic) {
   }
 }
 
+// chain_segments as it was written first (lines_writers.cpp at 68e0aa3: a std::map from each
+// mesh and point to the segments ending there), kept here as the reference of its output.
+std::vector<DrawingPolyline> reference_chain_class(const std::vector<DrawingSegment>& segments, bool visible) {
+  std::vector<const DrawingSegment*> mine;
+  for (const auto& s : segments)
+    if (s.visible == visible && s.a != s.b) mine.push_back(&s);
+  using End = std::pair<std::uint32_t, Point2>;
+  std::map<End, std::vector<std::size_t>> ending_at;
+  for (std::size_t i = 0; i < mine.size(); ++i) {
+    ending_at[{mine[i]->mesh, mine[i]->a}].push_back(i);
+    ending_at[{mine[i]->mesh, mine[i]->b}].push_back(i);
+  }
+  std::vector<bool> used(mine.size(), false);
+  auto other_end = [&](std::size_t i, const Point2& p) { return mine[i]->a == p ? mine[i]->b : mine[i]->a; };
+  auto walk = [&](Point2 end, std::size_t via, std::vector<Point2>& points) {
+    for (;;) {
+      const auto& incident = ending_at.find({mine[via]->mesh, end})->second;
+      if (incident.size() != 2) return;
+      const std::size_t next = incident[0] == via ? incident[1] : incident[0];
+      if (used[next]) return;
+      used[next] = true;
+      end = other_end(next, end);
+      points.push_back(end);
+      via = next;
+    }
+  };
+  std::vector<DrawingPolyline> chains;
+  for (std::size_t seed = 0; seed < mine.size(); ++seed) {
+    if (used[seed]) continue;
+    used[seed] = true;
+    DrawingPolyline chain;
+    chain.visible = visible;
+    chain.mesh = mine[seed]->mesh;
+    chain.points = {mine[seed]->a, mine[seed]->b};
+    walk(mine[seed]->b, seed, chain.points);
+    const Point2 start = chain.points.front();
+    if (chain.points.size() > 2 && chain.points.back() == start &&
+        ending_at.find({chain.mesh, start})->second.size() == 2) {
+      chain.points.pop_back();
+      chain.closed = true;
+    } else {
+      std::vector<Point2> before;
+      walk(start, seed, before);
+      chain.points.insert(chain.points.begin(), before.rbegin(), before.rend());
+    }
+    chains.push_back(std::move(chain));
+  }
+  return chains;
+}
+
+TEST(Chaining, AsTheMapOfEndsDidOnRandomNetworks) {
+  // Segments between points of a small grid (so that points of degree 1 to 6 and loops abound),
+  // both directions, some of zero length, -0.0 beside 0.0, three meshes, both classes.
+  std::mt19937 random(5);
+  for (int round = 0; round < 40; ++round) {
+    const int side = 3 + round % 6;
+    std::uniform_int_distribution<int> coordinate(0, side - 1);
+    auto point = [&]() -> Point2 {
+      const int x = coordinate(random), y = coordinate(random);
+      return {x == 0 && random() % 2 ? -0.0 : double(x), double(y) / 3};
+    };
+    std::vector<DrawingSegment> segments;
+    const int n = 5 + int(random() % 200);
+    for (int i = 0; i < n; ++i) {
+      const Point2 a = point();
+      Point2 b = point();
+      if (random() % 3) b = {a[0] + (random() % 2 ? 1 : 0), a[1] + (random() % 2 ? 1.0 / 3 : 0)};  // neighbours
+      segments.push_back(seg(a, b, random() % 4 != 0, std::uint32_t(random() % 3)));
+    }
+    auto want = reference_chain_class(segments, true);
+    const auto hidden = reference_chain_class(segments, false);
+    want.insert(want.end(), hidden.begin(), hidden.end());
+    const auto got = chain_segments(segments);
+    ASSERT_EQ(got.size(), want.size()) << "round " << round;
+    for (std::size_t c = 0; c < got.size(); ++c) {
+      EXPECT_EQ(got[c].visible, want[c].visible);
+      EXPECT_EQ(got[c].mesh, want[c].mesh);
+      EXPECT_EQ(got[c].closed, want[c].closed) << "round " << round << ", chain " << c;
+      ASSERT_EQ(got[c].points.size(), want[c].points.size()) << "round " << round << ", chain " << c;
+      for (std::size_t k = 0; k < got[c].points.size(); ++k)  // the same doubles, signed zeros and all
+        EXPECT_EQ(std::memcmp(&got[c].points[k], &want[c].points[k], sizeof(Point2)), 0)
+            << "round " << round << ", chain " << c << ", point " << k;
+    }
+  }
+}
+
 // --------------------------------------------------------------------------------------------
 // JSON.
 
@@ -251,7 +338,7 @@ TEST(LinesJson, FieldByField) {
   const json& s = j["stats"];
   EXPECT_EQ(s["seconds"], 1.5);
   EXPECT_EQ(s["stage_seconds"], json({{"read", 0.5}, {"sources", 0.25}, {"sort", 0.125}, {"intersections", 0.0},
-                                      {"lines", 0.375}, {"precedence", 0.0}}));
+                                      {"lines", 0.375}, {"precedence", 0.0}, {"write", 0.0}}));
   EXPECT_EQ(s["lines"], 2);
   EXPECT_EQ(s["lines_by_kind"],
             json({{"silhouette", 0}, {"crease", 1}, {"boundary", 0}, {"intersection", 1}, {"group", 0}}));
@@ -260,6 +347,26 @@ TEST(LinesJson, FieldByField) {
   EXPECT_EQ(s["hidden_pieces"], 1);
   EXPECT_EQ(j["kernel"], "exact");
   EXPECT_EQ(s["crease_degrees"], 45);
+}
+
+TEST(LinesJson, WriteStageCountsTheDocumentUpToItsStats) {
+  LineDrawing d = drawing_of({seg({0, 0}, {1, 0})});
+  d.times.read = 0.25;
+  d.times.sort = 1;
+  d.times.total = 1.25;
+  d.times.write = 0.5;  // rounding, say
+  json j = json::parse(lines_json(d));
+  EXPECT_EQ(j["stats"]["stage_seconds"]["write"], 0.5);
+  EXPECT_EQ(j["stats"]["seconds"], 1.75);
+  int calls = 0;
+  j = json::parse(lines_json(d, [&] { return ++calls, 2.0; }));
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(j["stats"]["stage_seconds"]["write"], 2.0);
+  EXPECT_EQ(j["stats"]["seconds"], 3.25);
+  d.raster = RasterInfo{64, 64, 32, 0.5};
+  j = json::parse(lines_json(d));
+  EXPECT_EQ(j["stats"]["stage_seconds"],
+            json({{"read", 0.25}, {"intersections", 0.0}, {"zbuffer", 0.0}, {"lines", 0.0}, {"write", 0.5}}));
 }
 
 TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {
@@ -273,6 +380,159 @@ TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {
   EXPECT_TRUE(j["lines"].is_array());
   EXPECT_TRUE(j["lines"].empty());
   EXPECT_EQ(j["kernel"], "epick");
+}
+
+// The document as one nlohmann::json tree, dumped: how lines_json made it before it wrote the
+// pieces itself (lines_writers.cpp at 68e0aa3, since then with the write stage in the stats),
+// kept here as the reference for its bytes.
+std::string lines_json_as_one_tree(const LineDrawing& drawing) {
+  json out;
+  out["format"] = "hlr-lines/1";
+  out["input"] = {{"files", drawing.input.files}, {"faces", drawing.input.faces}, {"vertices", drawing.input.vertices}};
+  const ViewInfo& v = drawing.view;
+  json view;
+  view["projection"] = "orthographic";
+  if (v.name != "custom") view["name"] = v.name;
+  view["direction"] = {v.direction[0], v.direction[1], v.direction[2]};
+  view["up"] = {v.up[0], v.up[1], v.up[2]};
+  json matrix = json::array();
+  for (const auto& row : v.world_to_view) matrix.push_back({row[0], row[1], row[2], row[3]});
+  view["world_to_view"] = std::move(matrix);
+  out["view"] = std::move(view);
+  out["kernel"] = drawing.raster ? "raster" : kernel_name(drawing.kernel);
+  if (const auto& r = drawing.raster)
+    out["raster"] = {{"resolution", r->resolution}, {"width", r->width}, {"height", r->height}, {"pixel", r->pixel}};
+  json lines = json::array();
+  for (const auto& p : drawing.pieces) {
+    json line;
+    line["a"] = {p.a[0], p.a[1], p.a[2]};
+    line["b"] = {p.b[0], p.b[1], p.b[2]};
+    line["visible"] = p.visible;
+    line["kind"] = feature_kind_name(p.kind);
+    line["mesh"] = p.mesh;
+    if (p.has_edge && p.kind != FeatureKind::intersection)
+      line["edge"] = {p.edge[0], p.edge[1]};
+    else
+      line["edge"] = nullptr;
+    lines.push_back(std::move(line));
+  }
+  out["lines"] = std::move(lines);
+  const auto& s = drawing.stats;
+  json by_kind = json::object();
+  for (auto kind : {FeatureKind::silhouette, FeatureKind::crease, FeatureKind::boundary, FeatureKind::intersection,
+                    FeatureKind::group})
+    by_kind[feature_kind_name(kind)] = s.by_kind[static_cast<std::size_t>(kind)];
+  const StageTimes& t = drawing.times;
+  const json stages =
+      drawing.raster ? json{{"read", t.read}, {"intersections", t.intersections}, {"zbuffer", drawing.zbuffer_seconds},
+                            {"lines", t.lines}, {"write", t.write}}
+                     : json{{"read", t.read}, {"sources", t.sources}, {"sort", t.sort}, {"intersections", t.intersections},
+                            {"lines", t.lines}, {"precedence", t.precedence}, {"write", t.write}};
+  out["stats"] = {
+      {"seconds", t.total + t.write},
+      {"stage_seconds", stages},
+      {"lines", s.lines},
+      {"lines_by_kind", std::move(by_kind)},
+      {"lines_seen_end_on", s.point_in_view},
+      {"visible_pieces", s.visible_pieces},
+      {"hidden_pieces", s.hidden_pieces},
+      {"drawn_visible_length", drawing.visible_length()},
+      {"drawn_hidden_length", drawing.hidden_length()},
+      {"crease_degrees", drawing.crease_degrees},
+      {"welded_vertices", drawing.input.welded_vertices},
+  };
+  if (drawing.merged_segments) {
+    out["stats"]["merged_segments"] = *drawing.merged_segments;
+    out["stats"]["merge_distance_mm"] = drawing.merge_distance_mm;
+    out["stats"]["contact_segments"] = drawing.contact_segments;
+    out["stats"]["contact_degrees"] = drawing.contact_degrees;
+  }
+  return out.dump(1) + "\n";
+}
+
+// Pieces of every kind with coordinates of every magnitude and bit pattern (signed zeros,
+// subnormals, NaN and infinities, which JSON writes as null), edges up to the largest index.
+LineDrawing random_drawing(std::uint32_t seed, std::size_t pieces) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coordinate(-500, 500);
+  auto number = [&]() -> double {
+    switch (rng() % 8) {
+      case 0: return std::bit_cast<double>(rng());  // any double at all, NaN and infinity included
+      case 1: return double(std::int64_t(rng() % 2001) - 1000);
+      case 2: return (rng() % 2) ? 0.0 : -0.0;
+      case 3: return std::ldexp(double(rng() % 1000), -int(rng() % 1100));  // down to subnormals
+      default: return coordinate(rng);
+    }
+  };
+  LineDrawing d = drawing_of({});
+  d.input.files = {"fixtures/part.off", "dir/\"quoted\" na\\me\twith\ttabs.off", "dir/pièce — ∅.off"};
+  d.input.faces = rng() % 100000;
+  d.input.vertices = rng() % 100000;
+  d.input.welded_vertices = rng() % 10;
+  for (auto& row : d.view.world_to_view)
+    for (double& x : row) x = number();
+  for (std::size_t i = 0; i < pieces; ++i) {
+    DrawingPiece p;
+    p.a = {number(), number(), number()};
+    p.b = {number(), number(), number()};
+    p.visible = rng() % 2;
+    p.kind = static_cast<FeatureKind>(rng() % 5);
+    p.mesh = std::uint32_t(rng() % 3);
+    p.has_edge = rng() % 4 != 0;
+    p.edge = {std::uint32_t(rng()), i % 7 ? std::uint32_t(rng() % 100) : 0xffffffffu};
+    d.pieces.push_back(p);
+    if (i % 3 == 0) d.segments.push_back(seg({p.a[0], p.a[1]}, {p.b[0], p.b[1]}, p.visible, p.mesh));
+  }
+  d.stats.lines = pieces / 2;
+  for (auto& k : d.stats.by_kind) k = rng() % 1000;
+  d.stats.visible_pieces = rng() % 1000;
+  d.stats.hidden_pieces = rng() % 1000;
+  d.times.read = number();
+  d.times.sort = 1.0 / 3;
+  d.times.total = 2.5;
+  d.times.write = 0.1;
+  d.crease_degrees = 30;
+  return d;
+}
+
+TEST(LinesJson, BytesAsOneTreeDumpsThem) {
+  LineDrawing empty;
+  EXPECT_EQ(lines_json(empty), lines_json_as_one_tree(empty));
+  empty.view.name = "custom";
+  EXPECT_EQ(lines_json(empty), lines_json_as_one_tree(empty));
+  for (std::uint32_t seed : {1u, 2u, 3u, 4u}) {
+    LineDrawing d = random_drawing(seed, seed == 1 ? 1 : seed == 2 ? 15000 : 3000);  // seed 2: about 4 MB
+    if (seed % 2 == 0) {
+      d.merged_segments = seed;
+      d.merge_distance_mm = 0.01;
+      d.contact_segments = 2;
+      d.contact_degrees = 10;
+    }
+    if (seed == 3) {
+      d.raster = RasterInfo{512, 512, 300, 0.125};
+      d.zbuffer_seconds = 0.75;
+    }
+    if (seed == 4) d.view.name = "custom";
+    const std::string got = lines_json(d), want = lines_json_as_one_tree(d);
+    // Written out as it is made: blocks of about a megabyte, in order, that make the same text.
+    std::vector<std::string> blocks;
+    write_lines_json(d, [&](std::string_view text) { blocks.emplace_back(text); });
+    std::string joined;
+    for (const auto& b : blocks) {
+      joined += b;
+      EXPECT_LE(b.size(), std::size_t(1) << 21);
+    }
+    EXPECT_EQ(joined, got) << "seed " << seed;
+    if (got.size() > (std::size_t(3) << 20)) {
+      EXPECT_GE(blocks.size(), 3u) << "seed " << seed;
+    }
+    EXPECT_EQ(got.size(), want.size()) << "seed " << seed;
+    const auto mismatch = std::mismatch(got.begin(), got.end(), want.begin(), want.end());
+    EXPECT_TRUE(mismatch.first == got.end() && mismatch.second == want.end())
+        << "seed " << seed << ": first difference at byte " << (mismatch.first - got.begin()) << ":\n"
+        << got.substr(std::size_t(std::max<std::ptrdiff_t>(0, mismatch.first - got.begin() - 80)), 160) << "\nagainst\n"
+        << want.substr(std::size_t(std::max<std::ptrdiff_t>(0, mismatch.second - want.begin() - 80)), 160);
+  }
 }
 
 // --------------------------------------------------------------------------------------------
@@ -598,6 +858,30 @@ TEST(SheetSegments, DistanceIsMillimetresOnTheSheet) {
   // The SVG and the DXF draw the merged segments: one hidden path fewer.
   const SvgDocument doc = parse_svg(lines_svg(d, a4()));
   EXPECT_EQ(doc.in_group("path", "hidden").size(), 3u);
+}
+
+TEST(SheetLines, OnceForBothWriters) {
+  LineDrawing d = box_with_hidden_hole();
+  d.segments.push_back(seg({0, 0.004}, {100, 0.004}, false));  // merged at 2:1
+  DrawingSegment contact = seg({10, 10}, {20, 10});
+  contact.meeting_degrees = 5;  // a contact line: left out
+  d.segments.push_back(contact);
+  const SheetLines sheet = sheet_lines(d, a4());
+  EXPECT_EQ(sheet.scale, drawing_scale(d, a4()));
+  const MergedSegments merged = sheet_segments(d, a4());
+  EXPECT_EQ(sheet.merged.merged, 1u);
+  EXPECT_EQ(sheet.merged.contact, 1u);
+  ASSERT_EQ(sheet.merged.segments.size(), merged.segments.size());
+  const auto chains = chain_segments(merged.segments);
+  ASSERT_EQ(sheet.chains.size(), chains.size());
+  for (std::size_t c = 0; c < chains.size(); ++c) EXPECT_EQ(sheet.chains[c].points, chains[c].points);
+  EXPECT_EQ(lines_svg(d, a4(), sheet), lines_svg(d, a4()));
+  EXPECT_EQ(lines_dxf(d, a4(), sheet), lines_dxf(d, a4()));
+  // The writers draw what they are given: a sheet without chains has no lines.
+  SheetLines none = sheet;
+  none.chains.clear();
+  EXPECT_TRUE(parse_svg(lines_svg(d, a4(), none)).in_group("path", "visible").empty());
+  EXPECT_EQ(read_dxf(lines_dxf(d, a4(), none)).polylines.size(), 0u);
 }
 
 TEST(PartNames, StemsMadeIdSafeAndUnique) {

@@ -3,16 +3,21 @@
 //   make_drawing  rounds a LineSet (and its drawing segments) to the orthonormal view frame in
 //                 model units: the one place where the exact result is rounded.
 //   lines_json    the hlr-lines/1 contract (DESIGN.md, docs/FORMATS.md): every piece, visible and
-//                 hidden, with its kind and mesh edge.
+//                 hidden, with its kind and mesh edge (write_lines_json: the same, written out as
+//                 it is made).
+//   sheet_lines   what a sheet shows of a drawing in a style: its scale, the sheet segments
+//                 (sheet_segments: the drawing segments after near-coincident ones are merged at
+//                 the drawing's resolution) and their chains. Worked out once, it is handed to
+//                 both writers below (and its counts to the JSON's stats), so that a command
+//                 writing SVG and DXF merges and chains once.
 //   lines_svg     a drawing on a sheet, in millimetres: visible lines continuous wide, hidden lines
 //                 dashed narrow (ISO 128, docs/FORMATS.md), each part's lines in a group of its own.
 //   lines_dxf     the same drawing as DXF R2000 in model units (millimetres), layers VISIBLE and
 //                 HIDDEN (one pair per part when the scene has several meshes), a dashed linetype
 //                 defined in the file, polylines as LWPOLYLINE.
 //
-// SVG and DXF draw the sheet segments (sheet_segments): the drawing segments after near-coincident
-// ones are merged at the drawing's resolution. That is a tolerance on rounded output, for the eye;
-// the JSON keeps every piece as the exact engine made it.
+// SVG and DXF draw the sheet lines. Merging is a tolerance on rounded output, for the eye; the
+// JSON keeps every piece as the exact engine made it.
 //
 // Writers return the document; the caller writes it to disk (atomically).
 #pragma once
@@ -22,8 +27,10 @@
 #include <hlr/hidden_line/raster.hpp>
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hlr::exporter {
@@ -133,8 +140,8 @@ struct MergedSegments {
 MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, double distance);
 
 // What the SVG and DXF of `drawing` show with `style`: the drawn classes (hidden ones only if
-// style.hidden) without the contact lines (style.contact_degrees), merged at style.merge_distance mm on the sheet, that is merge_distance / scale in
-// model units at the drawing's scale.
+// style.hidden) without the contact lines (style.contact_degrees), merged at style.merge_distance
+// mm on the sheet, that is merge_distance / scale in model units at the drawing's scale.
 MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style);
 
 // The name of each part (mesh) of a drawing, from its input file's stem: letters, digits, '_' and
@@ -156,7 +163,28 @@ struct DrawingPolyline {
 };
 std::vector<DrawingPolyline> chain_segments(const std::vector<DrawingSegment>& segments);
 
-std::string lines_json(const LineDrawing& drawing);
+// The sheet of `drawing` in `style`, for lines_svg and lines_dxf.
+struct SheetLines {
+  double scale = 1;                     // drawing_scale(drawing, style)
+  MergedSegments merged;                // sheet_segments(drawing, style)
+  std::vector<DrawingPolyline> chains;  // chain_segments(merged.segments)
+};
+SheetLines sheet_lines(const LineDrawing& drawing, const DrawingStyle& style);
+
+// The hlr-lines/1 document, handed to `sink` in blocks of about a megabyte as it is made (the
+// document of a large drawing is never held whole; `sink` writes the blocks out, in order). Its
+// stats.stage_seconds.write is drawing.times.write, or with `write_seconds` what that returns: it
+// is called once, when every piece has gone to the sink but the last block and only the stats and
+// the view are left, so that a caller timing its output stage can count the JSON's own making and
+// nearly all of its writing in it. stats.seconds is times.total plus that time: the run from
+// reading the meshes to the (nearly) finished document.
+void write_lines_json(const LineDrawing& drawing, const std::function<void(std::string_view)>& sink,
+                      const std::function<double()>& write_seconds = {});
+// The same document as one string.
+std::string lines_json(const LineDrawing& drawing, const std::function<double()>& write_seconds = {});
+// `sheet` must be sheet_lines(drawing, style); the overloads without it work it out themselves.
+std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& sheet);
+std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& sheet);
 std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style);
 std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style);
 

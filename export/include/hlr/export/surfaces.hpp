@@ -37,8 +37,11 @@ ViewInfo view_info(const ViewFrame<K>& frame) {
 
 // Seconds per stage, reported in "stats".
 struct StageTimes {
-  double read = 0, sources = 0, sort = 0, total = 0;
+  double read = 0, sources = 0, sort = 0, total = 0;     // total: reading and solving, every stage but `write`
   double intersections = 0, lines = 0, precedence = 0;  // hlr draw: penetrations, classification, ISO 128 precedence
+  // hlr draw: the output stage, from the end of precedence to the finished JSON document (rounding
+  // the exact drawing, the sheet lines, the SVG, DXF and PNG, the JSON itself); see lines_json.
+  double write = 0;
 };
 
 template <class K>

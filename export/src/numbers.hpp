@@ -1,0 +1,71 @@
+// Numbers as the line writers print them (lines_writers.cpp, lines_json.cpp): the one formatter of
+// every number in an SVG, DXF or hlr-lines/1 document, appended to the document's text without a
+// stream or a string per number. All of it is std::to_chars or nlohmann's own number printer,
+// independent of the C locale.
+//
+//   append_fixed        fixed notation with at most `decimals` decimals, trailing zeros and a
+//                       trailing point dropped, no "-0" (SVG millimetres: 4 decimals).
+//   append_round_trip   the shortest fixed notation that reads back as the same double, with ".0"
+//                       where it would have no point (DXF readers differ on exponents).
+//   append_json_number  what nlohmann::json's dump() prints for a double: its Grisu2 digits
+//                       (which round-trip but are not always the shortest: std::to_chars would
+//                       differ in about one number in a thousand), "null" for NaN and infinity.
+//   append_unsigned     a decimal integer.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace hlr::exporter::detail {
+
+// Room for any double in fixed notation: 309 integer digits or 324 decimals, and sign and point.
+inline constexpr std::size_t number_chars = 400;
+
+inline void append_fixed(std::string& out, double v, int decimals) {
+  char buf[number_chars];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  if (ec != std::errc()) return;
+  std::string_view s(buf, std::size_t(end - buf));
+  if (s.find('.') != std::string_view::npos) {
+    while (s.back() == '0') s.remove_suffix(1);
+    if (s.back() == '.') s.remove_suffix(1);
+  }
+  out += s == "-0" ? std::string_view("0") : s;
+}
+
+inline std::string fixed(double v, int decimals) {
+  std::string s;
+  append_fixed(s, v, decimals);
+  return s;
+}
+
+inline void append_round_trip(std::string& out, double v) {
+  char buf[number_chars];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  const std::string_view s(buf, ec == std::errc() ? std::size_t(end - buf) : 0);
+  out += s;
+  if (s.find('.') == std::string_view::npos) out += ".0";
+}
+
+inline void append_json_number(std::string& out, double v) {
+  if (!std::isfinite(v)) {
+    out += "null";
+    return;
+  }
+  char buf[64];  // nlohmann's serializer uses a buffer of 64 too
+  const char* end = nlohmann::detail::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, std::size_t(end - buf));
+}
+
+inline void append_unsigned(std::string& out, std::uint64_t v) {
+  char buf[24];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, std::size_t(end - buf));
+}
+
+}  // namespace hlr::exporter::detail

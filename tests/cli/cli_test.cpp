@@ -748,6 +748,29 @@ TEST_F(CliDraw, OneThreadAndTwoDrawTheSameBytes) {
   EXPECT_GE(files, 40u);
 }
 
+TEST_F(CliDraw, PredicateStatsCountTheExactKernelsDecisionsOnlyWhenAsked) {
+  // HLR_PREDICATE_STATS=1 adds one stderr line per predicate family and changes no line drawn.
+  const std::string mesh = (kScenes / "edge_on.off").string();
+  auto draw = [&](bool stats, const std::string& name) {
+    std::vector<std::string> argv{"/bin/sh", "-c", std::string(stats ? "HLR_PREDICATE_STATS=1 " : "") + "exec \"$0\" \"$@\"",
+                                  kBinary, "draw", mesh, "--view", "front", "-o", out(name).string()};
+    return spawn(argv);
+  };
+  const Outcome plain = draw(false, "plain.json"), counted = draw(true, "counted.json");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  ASSERT_EQ(counted.exit_code, 0) << counted.err;
+  EXPECT_EQ(plain.err.find("predicates"), std::string::npos) << plain.err;
+  const std::regex line(R"(hlr: predicates (orientation|comparison|sign): identity (\d+), interval (\d+), exact (\d+))");
+  std::size_t families = 0, orientations = 0;
+  for (auto it = std::sregex_iterator(counted.err.begin(), counted.err.end(), line); it != std::sregex_iterator(); ++it) {
+    ++families;
+    if ((*it)[1] == "orientation") orientations = std::stoull((*it)[2]) + std::stoull((*it)[3]) + std::stoull((*it)[4]);
+  }
+  EXPECT_EQ(families, 3u) << counted.err;
+  EXPECT_GT(orientations, 0u) << counted.err;
+  EXPECT_EQ(json::parse(slurp(out("plain.json"))).at("lines"), json::parse(slurp(out("counted.json"))).at("lines"));
+}
+
 TEST_F(CliDraw, DrawsTheBundledBracketIntoSvgDxfAndJson) {
   const std::string mesh = (kScenes / "l_bracket.off").string();
   Outcome run = hlr({"draw", mesh, "--view", "iso", "-o", out("b.svg").string(), "-o", out("b.dxf").string(), "-o",

@@ -61,7 +61,9 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
         const auto& piece = line.pieces[k];
         DrawingPiece& p = out[k];
         bool shared = false;
-        if constexpr (G::exact_constructions) shared = k > 0 && CGAL::identical(piece.t0, line.pieces[k - 1].t1);
+        // The member, which compares representations: the free CGAL::identical compares the two
+        // objects' addresses for a Lazy_exact_nt (its template beats the Handle overload).
+        if constexpr (G::exact_constructions) shared = k > 0 && piece.t0.identical(line.pieces[k - 1].t1);
         if (shared) {
           p.a = out[k - 1].b;
           p.t0 = out[k - 1].t1;

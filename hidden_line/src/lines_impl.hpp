@@ -14,13 +14,12 @@
 #pragma once
 
 #include <hlr/hidden_line/lines.hpp>
+#include <hlr/hidden_line/parallel.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
 
 #include "box_index.hpp"
 
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -442,7 +441,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
   }
 
   tbb::enumerable_thread_specific<typename detail::Classifier<K>::Scratch> scratch;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.lines.size(), 16), [&](const auto& range) {
+  parallel_chunks(out.lines.size(), 16, [&](const auto& range) {
     auto& mine = scratch.local();
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       FeatureLine<K>& line = out.lines[i];

@@ -68,6 +68,16 @@ class AreaSort {
   static bool separated(const clip::Contour<K>& a, const clip::Contour<K>& b) {
     constexpr std::size_t kMaxCorners = 16;
     if (a.size() > kMaxCorners || b.size() > kMaxCorners) return false;
+    // Two triangles with an edge each on one support line, run in opposite directions (mesh
+    // neighbours): each lies on its own closed side of the line, without an orientation test. On
+    // the exact kernel only, where corners lie on their support lines exactly.
+    if constexpr (G::exact_constructions)
+      if (a.size() == 3 && b.size() == 3)
+        for (std::size_t i = 0; i < 3; ++i)
+          for (std::size_t j = 0; j < 3; ++j)
+            if (a.lines[i] == b.lines[j] &&
+                G::compare_xy(a.points[i], a.points[(i + 1) % 3]) == -G::compare_xy(b.points[j], b.points[(j + 1) % 3]))
+              return true;
     auto separates = [](const clip::Contour<K>& own, const clip::Contour<K>& other) {
       const std::size_t n = own.size();
       for (std::size_t i = 0; i < n; ++i) {

@@ -629,6 +629,13 @@ TEST_P(LineFixtureViews, Contract) {
   // Winding is no input: the same mesh with every face reversed draws the same lines.
   EXPECT_EQ(line_signature(run_lines(reversed_meshes(meshes), p.view).set), line_signature(set))
       << p.file << " reversed";
+  // Nor is the screen subdivision: strips of one, two or five sources draw the same lines.
+  for (std::size_t per_strip : {1, 2, 5}) {
+    hidden_line::AreaSortOptions sort;
+    sort.sources_per_strip = per_strip;
+    EXPECT_EQ(line_signature(run_lines(meshes, p.view, {}, true, sort).set), line_signature(set))
+        << p.file << " in strips of " << per_strip;
+  }
 }
 
 std::vector<FixtureView> fixture_views() {

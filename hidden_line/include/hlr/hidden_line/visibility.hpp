@@ -111,9 +111,14 @@ struct VisibilityMap {
 struct AreaSortOptions {
   // The hidden polygon set: `hlr surfaces` writes it; a line drawing needs only the visible one.
   bool keep_hidden = true;
+  // Screen subdivision (exact kernel): the image is cut into vertical strips of about this many
+  // sources each (at most 8), sorted in parallel; 0 never cuts it. Fragments that reach across a
+  // strip border come out as one piece per strip. The strips do not depend on the thread count.
+  std::size_t sources_per_strip = 4096;
 };
 
-// Solves visibility for the sources; appends the lines of penetration splits to sources.lines.
+// Solves visibility for the sources; appends the lines of strip borders and penetration splits to
+// sources.lines.
 template <class K>
 VisibilityMap<K> area_sort(Sources<K>& sources, const AreaSortOptions& options = {});
 

@@ -184,11 +184,23 @@ struct CgalGeometry {
   }
 
   // The intersection of the line through a, b with the line through c, d (not parallel).
+  // On the exact kernel, where a line is known to be axis-parallel (its points' coordinates are one
+  // double), the crossing takes that coordinate itself rather than a construction equal to it, so
+  // that crossings along the line (a strip border) compare without exact arithmetic.
   static Point line_intersection(const Point& a, const Point& b, const Point& c, const Point& d) {
     typename K::Line_2 l1(a, b), l2(c, d);
     auto result = CGAL::intersection(l1, l2);
     if (result) {
-      if (const Point* p = boost::get<Point>(&*result)) return *p;
+      if (const Point* p = boost::get<Point>(&*result)) {
+        if constexpr (exact_constructions) {
+          const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b), &ic = CGAL::approx(c), &id = CGAL::approx(d);
+          const bool ax = compare_intervals(ia.x(), ib.x()) == 0, cx = compare_intervals(ic.x(), id.x()) == 0;
+          const bool ay = compare_intervals(ia.y(), ib.y()) == 0, cy = compare_intervals(ic.y(), id.y()) == 0;
+          if (ax || cx || ay || cy)
+            return Point(ax ? a.x() : cx ? c.x() : p->x(), ay ? a.y() : cy ? c.y() : p->y());
+        }
+        return *p;
+      }
     }
     throw std::runtime_error("line_intersection: lines are parallel");
   }

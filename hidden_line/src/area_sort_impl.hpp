@@ -411,13 +411,16 @@ std::vector<std::vector<Item<K>>> strips(Sources<K>& sources, std::size_t source
   const clip::LineId bottom = add_line(x_lo, y_lo, x_hi, y_lo), top = add_line(x_hi, y_hi, x_lo, y_hi);
   std::vector<clip::LineId> verticals;
   for (double x : xs) verticals.push_back(add_line(x, y_lo, x, y_hi));
+  // One point per crossing of a border with a support line, whichever source's clip finds it: the
+  // pieces on both sides of a border, and neighbours across it, share their corners there.
+  clip::CrossingCache<K> crossings;
   std::vector<clip::ClipRegion<K>> regions;
   for (std::size_t j = 0; j + 1 < xs.size(); ++j) {
     clip::Contour<K> rect;
     rect.points = {G::point(FT(xs[j]), FT(y_lo)), G::point(FT(xs[j + 1]), FT(y_lo)),
                    G::point(FT(xs[j + 1]), FT(y_hi)), G::point(FT(xs[j]), FT(y_hi))};
     rect.lines = {bottom, verticals[j + 1], top, verticals[j]};
-    regions.emplace_back(clip::Polygon<K>{std::move(rect), {}}, sources.lines);
+    regions.emplace_back(clip::Polygon<K>{std::move(rect), {}}, sources.lines, &crossings);
   }
 
   std::vector<std::vector<Item<K>>> out(regions.size());

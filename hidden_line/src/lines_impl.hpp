@@ -16,6 +16,7 @@
 #include <hlr/hidden_line/lines.hpp>
 #include <hlr/hidden_line/parallel.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
+#include <hlr/kernel/view_predicates.hpp>
 
 #include "box_index.hpp"
 
@@ -421,6 +422,9 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
       line.mesh = m;
       line.v0 = edge.v0;
       line.v1 = edge.v1;
+      line.has_model_ends = true;
+      line.model_a = meshes[m].vertices[edge.v0];
+      line.model_b = meshes[m].vertices[edge.v1];
       add(std::move(line), {{m, &edge.faces}});
     }
   }
@@ -456,6 +460,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
     for (const auto& p : line.pieces) ++(p.visible ? out.stats.visible_pieces : out.stats.hidden_pieces);
   }
   out.stats.lines = out.lines.size();
+  out.view_direction = frame.view().direction;
   return out;
 }
 
@@ -481,8 +486,20 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
       for (const auto& p : lines.lines[i].pieces)
         if (p.visible == visible) spans.push_back({i, p.t0, p.t1, visible});
 
+  // Whether two lines' images are collinear, decided on their own ends: on the input coordinates
+  // where both are mesh edges (exact zeros there are common, and cheap), else on the images.
+  auto collinear_lines = [&](std::uint32_t i, std::uint32_t j) {
+    const FeatureLine<K>&li = lines.lines[i], &lj = lines.lines[j];
+    if (li.has_model_ends && lj.has_model_ends) {
+      const Vec3& d = lines.view_direction;
+      return collinear_in_view(li.model_a, li.model_b, lj.model_a, d) && collinear_in_view(li.model_a, li.model_b, lj.model_b, d);
+    }
+    const detail::ImageLine<K>&a = images[i], &b = images[j];
+    return G::orientation(a.a, a.b, b.a) == 0 && G::orientation(a.a, a.b, b.b) == 0;
+  };
+
   // Visible spans first, then hidden ones; each loses what earlier, collinear spans already draw.
-  // Collinearity is decided on the lines' own ends, and pieces of one line never overlap.
+  // Pieces of one line never overlap.
   std::vector<DrawnSegment<K>> out;
   std::vector<Span> drawn;  // parallel to out
   detail::LooseGrid grid(domain, spans.size());
@@ -499,8 +516,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
       const Span& d = drawn[i];
       if (d.line == span.line) return;
       if (collinear[d.line] < 0) {
-        const detail::ImageLine<K>& other = images[d.line];
-        collinear[d.line] = G::orientation(image.a, image.b, other.a) == 0 && G::orientation(image.a, image.b, other.b) == 0;
+        collinear[d.line] = collinear_lines(span.line, d.line);
         asked.push_back(d.line);
       }
       if (!collinear[d.line]) return;

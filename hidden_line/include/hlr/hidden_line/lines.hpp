@@ -55,6 +55,9 @@ struct FeatureLine {
   std::uint32_t v0 = 0, v1 = 0;  // the mesh edge's input vertices; unused for intersections
   std::vector<LinePiece<K>> pieces;  // empty when the line projects to a point
   double meeting_degrees = 90;       // intersections: IntersectionSegment::meeting_degrees
+  // Mesh edges: the ends' input coordinates, for predicates decided on them (view_predicates.hpp).
+  bool has_model_ends = false;
+  Vec3 model_a{}, model_b{};
 };
 
 struct LineStats {
@@ -68,6 +71,7 @@ template <class K>
 struct LineSet {
   std::vector<FeatureLine<K>> lines;
   LineStats stats;
+  Vec3 view_direction{0, 0, -1};  // of the view the lines were classified in
 };
 
 struct LineOptions {

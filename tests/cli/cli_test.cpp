@@ -940,7 +940,7 @@ TEST_F(CliDraw, NearlyCoincidentEdgesOfTwoPartsAreDrawnOnceInTheirPartGroups) {
   const std::string front = (kParts / "front_box.off").string(), back = (kParts / "back_box.off").string();
   Outcome run = hlr({"draw", front, back, "--view", "front", "-o", out("p.svg").string(), "-o", out("p.json").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.out.find("2 segments merged in the SVG and DXF"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("2 segments merged on the sheet"), std::string::npos) << run.out;
 
   // The JSON: the cube's left edge visible at x = 0, the box's hidden at x = 1e-7, both there.
   const json doc = json::parse(slurp(out("p.json")));
@@ -1000,7 +1000,7 @@ TEST_F(CliDraw, ContactLinesOfNearlyTangentSurfacesAreLeftOffTheSheet) {
   const std::string bore = write_input("bore.off", cylinder_off(72, 10, 0, 20)).string();
   Outcome run = hlr({"draw", shaft, bore, "--view", "front", "-o", out("s.svg").string(), "-o", out("s.json").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.out.find("intersection segments left out of the SVG and DXF"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("intersection segments left off the sheet"), std::string::npos) << run.out;
   const json doc = json::parse(slurp(out("s.json")));
   EXPECT_GT(doc.at("stats").at("lines_by_kind").at("intersection").get<int>(), 50);
   EXPECT_GT(doc.at("stats").at("contact_segments").get<int>(), 50);

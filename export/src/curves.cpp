@@ -107,13 +107,32 @@ Point2 onto(const Circle& c, const Point2& p) {
 
 // The steps of a run round its centre. Tessellations divide a circle evenly (cos and sin of
 // 2 pi k / n); the projection of a tessellated circle seen at a slant, an ellipse, lies as close to
-// a circle over a few vertices, but its steps grow and shrink round it: over four vertices of a
-// 32-gon seen in the iso view they differ by a fifth. Steps are even when they differ by at most
-// 0.5 %, or by an arc length of a tenth of the tolerance (noise: coordinates written as floats).
-struct Steps {
-  double lo = HUGE_VAL, hi = 0;
-  void add(double step) { lo = std::min(lo, std::abs(step)), hi = std::max(hi, std::abs(step)); }
-  bool even(double r, double tol) const { return hi - lo <= std::max(0.005 * hi, 0.1 * tol / r); }
+// circles over a stretch of vertices (a 48-gon seen in the iso view fits four arcs within 0.01 of
+// its 6 mm radius), but its steps grow and shrink round them. So the angles of a run's vertices
+// must grow evenly: they may lie off the straight line fitted to them (angle against vertex
+// number) by no more than the tolerance, as arc length, as the vertices of an even tessellation
+// may lie off it by the tolerance. Noise (coordinates written as floats) is far below that.
+class Steps {
+ public:
+  void add(double step) { angles_.push_back(angles_.empty() ? step : angles_.back() + step); }
+  bool even(double r, double tol) const {
+    const std::size_t n = angles_.size() + 1;  // angles from the run's first vertex, which is at 0
+    if (n < 3) return true;
+    double sk = 0, sa = 0, skk = 0, ska = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double a = k == 0 ? 0 : angles_[k - 1];
+      sk += double(k), sa += a, skk += double(k) * double(k), ska += double(k) * a;
+    }
+    const double slope = (double(n) * ska - sk * sa) / (double(n) * skk - sk * sk), offset = (sa - slope * sk) / double(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double a = k == 0 ? 0 : angles_[k - 1];
+      if (std::abs(a - offset - slope * double(k)) * r > tol) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<double> angles_;
 };
 
 // A run of q[first..last] on one circle; `sweep` is signed (positive counter-clockwise).
@@ -273,18 +292,101 @@ std::optional<Circle> whole_circle(const std::vector<Point2>& p, double tol) {
   return c;
 }
 
-// Whether the runs of a closed chain all lie on one circle and leave out no more of it than two
-// of their steps: a circle with a vertex off it, which is drawn as the polygon it is (a vertex
-// off by more than the resolution is the shape's, not the tessellation's).
-bool nearly_round(const std::vector<Run>& runs, double tol) {
-  double sweep = 0, widest = 0;
-  for (const Run& r : runs) {
-    const Circle& c = runs.front().circle;
-    if (std::hypot(r.circle.cx - c.cx, r.circle.cy - c.cy) > tol || std::abs(r.circle.r - c.r) > tol) return false;
-    sweep += std::abs(r.sweep);
-    widest = std::max(widest, std::abs(r.sweep) / double(r.last - r.first));
+// Whether a closed chain that is no circle is nearly one: it goes round its own fitted circle
+// once, one way, in steps of at most max_step, every vertex within 5 % of the radius (and the
+// tolerance) of it. Such a chain is a circle with a vertex or a few off it by more than the
+// resolution: that is the shape's, not the tessellation's, and the polygon is drawn as it is.
+// (Its other vertices would make arcs, of circles bent to take the odd vertex in.) A slot, a
+// rounded rectangle or a keyway is far from round and keeps its arcs.
+bool nearly_round(const std::vector<Point2>& p, double tol) {
+  const auto c = fit_circle(p.data(), p.size());
+  if (!c) return false;
+  double sweep = 0, sign = 0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    if (std::abs(distance(p[k], {c->cx, c->cy}) - c->r) > 0.05 * c->r + tol) return false;
+    const double step = step_between(angle_of(*c, p[k]), angle_of(*c, p[(k + 1) % p.size()]));
+    if (step == 0 || std::abs(step) > max_step) return false;
+    if (sign == 0) sign = step > 0 ? 1 : -1;
+    if (step * sign < 0) return false;
+    sweep += step;
   }
-  return sweep >= 2 * pi - 2 * widest * (1 + 1e-6);
+  return std::abs(std::abs(sweep) - 2 * pi) <= 1e-6;
+}
+
+bool same_circle(const Circle& a, const Circle& b, double tol) {
+  return std::hypot(a.cx - b.cx, a.cy - b.cy) <= tol && std::abs(a.r - b.r) <= tol;
+}
+
+// Runs found one after another can take an odd vertex into a short run of its own, whose circle
+// bends to reach it (any four points near a circle fit some circle over a short stretch). A run
+// between two runs of one circle, on another circle, is such a run: dropped, its vertices drawn
+// as lines. (A chain keeps the runs in its order; a closed chain's first and last are neighbours.)
+//
+// Runs of different circles that follow one another without a line or a corner between them are
+// a smooth curve that is no circle: an ellipse (a circle seen at a slant) is as close to four
+// arcs near its vertices as a tessellated circle is to one. Such a sequence of runs is dropped
+// whole: a drawing keeps arcs that end at a line, a corner or the chain's end, or at another arc
+// of their own circle. (An S-curve of two arcs is drawn as the polyline it is.)
+std::vector<Run> without_bent_runs(std::vector<Run> runs, bool closed, double tol, const std::vector<Point2>& q) {
+  const std::size_t n = runs.size();
+  std::vector<bool> drop(n, false);
+  if (n >= 3 || (closed && n == 3))
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!closed && (i == 0 || i + 1 == n)) continue;
+      const Run &before = runs[(i + n - 1) % n], &after = runs[(i + 1) % n];
+      if (same_circle(before.circle, after.circle, tol) && !same_circle(runs[i].circle, before.circle, tol)) drop[i] = true;
+    }
+  // Whether run j starts where run i ends, smoothly (the chords on either side turn by no more
+  // than the runs' steps).
+  auto smooth_join = [&](std::size_t i, std::size_t j) {
+    const std::size_t m = q.size() - 1;
+    const bool joined = runs[i].last == runs[j].first || (closed && runs[i].last == m && runs[j].first == 0);
+    if (!joined) return false;
+    const Point2 &a = q[runs[i].last - 1], &b = q[runs[i].last], &c = q[runs[j].first + 1];
+    const double turn = std::abs(step_between(std::atan2(b[1] - a[1], b[0] - a[0]), std::atan2(c[1] - b[1], c[0] - b[0])));
+    return turn <= max_step;
+  };
+  std::vector<bool> smooth(n, false);  // smooth[i]: run i + 1 (mod n) follows run i smoothly on another circle
+  for (std::size_t i = 0; i + 1 < n || (closed && n > 1 && i < n); ++i) {
+    const std::size_t j = (i + 1) % n;
+    if (drop[i] || drop[j]) continue;
+    smooth[i] = smooth_join(i, j) && !same_circle(runs[i].circle, runs[j].circle, tol);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (smooth[i]) drop[i] = drop[(i + 1) % n] = true;
+  // Likewise a run that the polyline goes on from smoothly, turning on the same way at the first
+  // vertex beyond it that is no run's (by a quarter of the run's step or more): the arc near an
+  // ellipse's vertex, between the flatter stretches that fit no circle. A slot's or a rounded
+  // rectangle's arc is followed by a straight line to the next arc; a hole's ends at a corner or
+  // at the chain's end.
+  const std::size_t m = q.size() - 1;
+  std::vector<bool> in_run(q.size(), false);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!drop[i])
+      for (std::size_t k = runs[i].first; k <= runs[i].last; ++k) in_run[k] = true;
+  if (closed) in_run[0] = in_run[m] = in_run[0] || in_run[m];
+  auto at = [&](std::ptrdiff_t k) -> std::optional<std::size_t> {  // q's index k, cyclic if closed
+    if (closed) return std::size_t(((k % std::ptrdiff_t(m)) + std::ptrdiff_t(m)) % std::ptrdiff_t(m));
+    if (k < 0 || k > std::ptrdiff_t(m)) return std::nullopt;
+    return std::size_t(k);
+  };
+  auto goes_on_turning = [&](const Run& r, std::ptrdiff_t v, std::ptrdiff_t towards) {
+    const auto here = at(v), before = at(v - towards), after = at(v + towards);
+    if (!here || !before || !after || in_run[*here]) return false;
+    const Point2 &a = q[*before], &b = q[*here], &c = q[*after];
+    const double turn = step_between(std::atan2(b[1] - a[1], b[0] - a[0]), std::atan2(c[1] - b[1], c[0] - b[0])) * double(towards);
+    const double step = std::abs(r.sweep) / double(r.last - r.first);
+    return turn * r.sweep > 0 && std::abs(turn) >= 0.25 * step && std::abs(turn) <= max_step;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (drop[i]) continue;
+    const Run& r = runs[i];
+    if (goes_on_turning(r, std::ptrdiff_t(r.last) + 1, 1) || goes_on_turning(r, std::ptrdiff_t(r.first) - 1, -1)) drop[i] = true;
+  }
+  std::vector<Run> kept;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!drop[i]) kept.push_back(runs[i]);
+  return kept;
 }
 
 DrawingPath straight_path(const DrawingPolyline& chain) {
@@ -312,17 +414,32 @@ DrawingCurves recover_curves(const std::vector<DrawingPolyline>& chains, double 
         out.circles.push_back({{c->cx, c->cy}, c->r, chain.visible, chain.mesh});
         continue;
       }
+      if (nearly_round(chain.points, tolerance)) {
+        out.paths.push_back(straight_path(chain));
+        continue;
+      }
     }
-    // The points to scan: a closed chain from its sharpest corner round to that corner again.
+    // The points to scan: a closed chain from its sharpest corner round to that corner again, and
+    // then, if the first run ends before the chain does, from that run's end: where a circle
+    // stops is a better start than a corner (a slot's lines meet its arcs without a corner).
     std::vector<Point2> q;
+    std::vector<Run> runs;
     if (chain.closed) {
-      const std::size_t n = chain.points.size(), s = sharpest_corner(chain.points);
-      for (std::size_t k = 0; k <= n; ++k) q.push_back(chain.points[(s + k) % n]);
+      const std::size_t n = chain.points.size();
+      auto scan_from = [&](std::size_t s) {
+        q.clear();
+        for (std::size_t k = 0; k <= n; ++k) q.push_back(chain.points[(s + k) % n]);
+        runs = ChainScanner(q, false, tolerance).runs();
+      };
+      const std::size_t s = sharpest_corner(chain.points);
+      scan_from(s);
+      if (!runs.empty() && runs[0].last < n) scan_from((s + runs[0].last) % n);
     } else {
       q = chain.points;
+      runs = ChainScanner(q, true, tolerance).runs();
     }
-    const std::vector<Run> runs = ChainScanner(q, !chain.closed, tolerance).runs();
-    if (runs.empty() || (chain.closed && nearly_round(runs, tolerance))) {
+    runs = without_bent_runs(std::move(runs), chain.closed, tolerance, q);
+    if (runs.empty()) {
       out.paths.push_back(straight_path(chain));
       continue;
     }

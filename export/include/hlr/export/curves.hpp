@@ -9,9 +9,9 @@
 //
 // The rule (docs/FORMATS.md, "Circles and arcs"): a run of at least three segments whose
 // vertices all lie within `tolerance` of one fitted circle, going round it one way in even steps
-// (equal within 0.5 %, as tessellations divide circles: an ellipse's steps are not) of at most 46
-// degrees (a circle of 8 segments has 45), and not within `tolerance` of a straight line, is an
-// arc; a closed chain that goes round once that way is a circle. The two ends of an
+// (their angles within `tolerance`, as arc length, of an even division, as tessellations divide
+// circles: an ellipse's steps are not even) of at most 46 degrees (a circle of 8 segments has
+// 45), and not within `tolerance` of a straight line, is an arc; a closed chain that goes round once that way is a circle. The two ends of an
 // open chain may also lie on the chord that leaves the circle's last vertex (where a line becomes
 // hidden, or a merged line was trimmed, in the middle of a tessellation segment).
 #pragma once

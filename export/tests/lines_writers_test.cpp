@@ -1010,6 +1010,7 @@ int write_samples(const std::filesystem::path& dir) {
   visible_only.hidden = false;
   const LineDrawing bracket = sample_bracket();
   write("bracket.svg", lines_svg(bracket, a4_style));
+  write("bracket.pdf", lines_pdf(bracket, a4_style));
   write("bracket.dxf", lines_dxf(bracket, a4_style));
   write("bracket.json", lines_json(bracket));
   write("bracket_visible_only.svg", lines_svg(bracket, visible_only));

@@ -192,7 +192,8 @@ Subcommand add_draw_command(CLI::App& parent) {
       "  hlr draw fixtures/parts/anchor.off --view iso --raster 2048 -o out/anchor.png\n"
       "\n"
       "Feature lines are boundary, crease, silhouette, group and intersection lines; each is split into\n"
-      "visible and hidden pieces exactly. Model units are taken as millimetres. Formats: docs/FORMATS.md.");
+      "visible and hidden pieces exactly. Model units are millimetres unless --units says otherwise.\n"
+      "Formats: docs/FORMATS.md.");
   return {cmd, [options] { return run(*options); }};
 }
 

@@ -21,7 +21,7 @@ namespace {
 
 struct SheetOptions {
   std::vector<std::string> meshes, outputs;
-  std::vector<std::string> views{"front", "top", "right", "iso"};
+  std::string views = "front,top,right,iso";
   std::vector<double> direction, up;
   std::string projection = "third";
   std::string kernel = "exact";
@@ -43,7 +43,15 @@ Format format_of(const std::string& path) {
 // The views to draw, by name, or nothing after a one-line usage error.
 std::optional<std::vector<View>> resolve_views(const SheetOptions& options) {
   std::vector<View> views;
-  for (const auto& name : options.views) {
+  std::vector<std::string> names;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = options.views.find(',', start);
+    names.push_back(options.views.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (options.views.empty()) names.clear();
+  for (const auto& name : names) {
     View view;
     if (!named_view(name, view)) {
       std::cerr << "hlr: --views: unknown view \"" << name << "\" (use " << named_view_list << ")" << std::endl;
@@ -155,8 +163,9 @@ Subcommand add_sheet_command(CLI::App& parent) {
                   "view); may be given several times")
       ->required()
       ->type_name("OUT");
-  cmd->add_option("--views", options->views, std::string("views to draw, of ") + named_view_list)
-      ->delimiter(',')
+  cmd->add_option("--views", options->views,
+                  std::string("views to draw, separated by commas: any of ") + named_view_list +
+                      " (the principal ones placed after ISO 5456-2, the others in free corners)")
       ->capture_default_str()
       ->type_name("LIST");
   auto* dir = cmd->add_option("--dir", options->direction, "one more view, looking along this direction (in a free corner)")

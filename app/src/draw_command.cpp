@@ -9,7 +9,6 @@
 #include <hlr/export/check.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <memory>

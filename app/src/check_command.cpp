@@ -59,7 +59,7 @@ int run(CheckOptions options) {
   const Scene scene = load_scene(options.scene.meshes);
   LineRunSettings settings = options.lines;
   settings.progress = scene.input.faces >= 10000;
-  const Intersections intersections = find_intersections(scene, settings);
+  const Intersections intersections(scene, settings);
   const exporter::LineDrawing reference =
       kernel_drawing(options.scene, scene, *view, KernelKind::exact, intersections, settings);
 

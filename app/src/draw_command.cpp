@@ -56,7 +56,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   LineRunSettings settings = options.lines;
   settings.progress = scene.input.faces >= 10000;
   settings.free_at_exit = true;  // the run ends with the outputs
-  const Intersections intersections = find_intersections(scene, settings);
+  const Intersections intersections(scene, settings);
   RasterRun raster;
   exporter::LineDrawing drawing;
   if (options.raster > 0) {

@@ -1,12 +1,14 @@
 #include "line_runs.hpp"
 
+#include <tbb/task_group.h>
+
 #include <iostream>
 
 namespace hlr::app {
 namespace {
 
 void stage(const LineRunSettings& settings, const std::string& what) {
-  if (settings.progress) std::cerr << "hlr: " << what << '\n';
+  if (settings.progress) std::cerr << ("hlr: " + what + '\n');  // one write: stages may run side by side
 }
 
 hidden_line::LineOptions line_options(const LineRunSettings& settings) {
@@ -30,9 +32,12 @@ exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kin
                             const LineRunSettings& settings) {
   const ViewFrame<K> frame(view);
   exporter::StageTimes times;
-  times.intersections = intersections.seconds;
   auto solution = std::make_unique<Solution<K>>();
-  auto mark = std::chrono::steady_clock::now();
+  const auto begin = std::chrono::steady_clock::now();
+  const bool found_before = intersections.found();
+  tbb::task_group beside;  // with one thread, run by wait() below
+  beside.run([&] { intersections.segments(); });
+  auto mark = begin;
   stage(settings, std::to_string(scene.input.faces) + " faces; building polygons (" + kernel_name(kind) + ")");
   solution->sources = hidden_line::build_sources<K>(scene.meshes, frame);
   times.sources = seconds_since(mark);
@@ -41,15 +46,18 @@ exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kin
   // A drawing needs only the visible polygons: what the front pieces hide is not kept.
   solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false});
   times.sort = seconds_since(mark);
+  beside.wait();
+  times.intersections = intersections.seconds();
   stage(settings, "classifying feature lines");
   mark = std::chrono::steady_clock::now();
   solution->lines = hidden_line::classify_lines<K>(scene.meshes, frame, solution->sources, solution->map,
-                                                   intersections.segments, line_options(settings));
+                                                   intersections.segments(), line_options(settings));
   times.lines = seconds_since(mark);
   mark = std::chrono::steady_clock::now();
   solution->segments = hidden_line::drawing_segments<K>(solution->lines);
   times.precedence = seconds_since(mark);
-  times.total = times.intersections + times.sources + times.sort + times.lines + times.precedence;
+  // The stages' own times overlap where the intersections were found beside the polygons.
+  times.total = seconds_since(begin) + (found_before ? times.intersections : 0);
 
   // The output stage starts here: the one rounding of the exact result, then the exact solution
   // freed (or left to the process's exit: see LineRunSettings).
@@ -75,14 +83,16 @@ void add_line_options(CLI::App& cmd, LineRunSettings& settings) {
       "--no-intersections", [&settings] { settings.intersections = false; }, "leave out the lines where faces penetrate");
 }
 
-Intersections find_intersections(const Scene& scene, const LineRunSettings& settings) {
-  Intersections out;
-  if (!settings.intersections) return out;
-  stage(settings, "finding where faces penetrate");
-  const auto start = std::chrono::steady_clock::now();
-  out.segments = hidden_line::intersection_lines(scene.meshes);
-  out.seconds = seconds_since(start);
-  return out;
+const std::vector<hidden_line::IntersectionSegment>& Intersections::segments() const {
+  std::call_once(once_, [this] {
+    if (!settings_.intersections) return;
+    stage(settings_, "finding where faces penetrate");
+    const auto start = std::chrono::steady_clock::now();
+    segments_ = hidden_line::intersection_lines(scene_.meshes);
+    seconds_ = seconds_since(start);
+  });
+  found_ = true;
+  return segments_;
 }
 
 exporter::LineDrawing kernel_drawing(const SceneOptions& options, const Scene& scene, const View& view, KernelKind kind,
@@ -98,12 +108,12 @@ RasterRun raster_drawing(const Scene& scene, const View& view, int resolution, c
                          const LineRunSettings& settings) {
   RasterRun run;
   exporter::StageTimes times;
-  times.intersections = intersections.seconds;
+  times.intersections = intersections.seconds();
   stage(settings, "Z-buffer at " + std::to_string(resolution) + " pixels");
   auto mark = std::chrono::steady_clock::now();
   hidden_line::RasterOptions raster;
   raster.resolution = resolution;
-  run.raster = std::make_unique<hidden_line::RasterDrawing>(scene.meshes, view, intersections.segments,
+  run.raster = std::make_unique<hidden_line::RasterDrawing>(scene.meshes, view, intersections.segments(),
                                                             line_options(settings), raster);
   const double zbuffer = seconds_since(mark);
   mark = std::chrono::steady_clock::now();

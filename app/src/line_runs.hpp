@@ -7,7 +7,9 @@
 
 #include <hlr/export/lines.hpp>
 
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -29,11 +31,23 @@ struct LineRunSettings {
 void add_line_options(CLI::App& cmd, LineRunSettings& settings);
 
 // The exact intersection segments of the scene, if the settings ask for them, and their time.
-struct Intersections {
-  std::vector<hidden_line::IntersectionSegment> segments;
-  double seconds = 0;
+// They do not depend on the view: they are found once, by the first run that asks, and a kernel
+// run finds them beside its polygon stages when a second thread is free.
+class Intersections {
+ public:
+  Intersections(const Scene& scene, const LineRunSettings& settings) : scene_(scene), settings_(settings) {}
+  const std::vector<hidden_line::IntersectionSegment>& segments() const;  // finds them on the first call
+  double seconds() const { return segments(), seconds_; }
+  bool found() const { return found_; }
+
+ private:
+  const Scene& scene_;
+  LineRunSettings settings_;
+  mutable std::once_flag once_;
+  mutable std::vector<hidden_line::IntersectionSegment> segments_;
+  mutable double seconds_ = 0;
+  mutable std::atomic<bool> found_ = false;
 };
-Intersections find_intersections(const Scene& scene, const LineRunSettings& settings);
 
 // The drawing by kernel `kind`; an inexact kernel's failure throws inexact_kernel_failure's
 // UserError naming `options.meshes`.

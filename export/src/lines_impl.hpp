@@ -12,8 +12,7 @@
 
 #include <hlr/export/lines.hpp>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include <hlr/hidden_line/parallel.hpp>
 
 namespace hlr::exporter {
 
@@ -34,7 +33,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   std::vector<std::size_t> first(lines.lines.size() + 1, 0);
   for (std::size_t i = 0; i < lines.lines.size(); ++i) first[i + 1] = first[i] + lines.lines[i].pieces.size();
   d.pieces.resize(first.back());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, lines.lines.size(), 64), [&](const auto& range) {
+  hidden_line::parallel_chunks(lines.lines.size(), 64, [&](const auto& range) {
     for (std::size_t index = range.begin(); index != range.end(); ++index) {
       const auto& line = lines.lines[index];
       if (line.pieces.empty()) continue;
@@ -84,7 +83,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   });
 
   d.segments.resize(segments.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, segments.size(), 256), [&](const auto& range) {
+  hidden_line::parallel_chunks(segments.size(), 256, [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const auto& s = segments[i];
       d.segments[i] = {{frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)},

@@ -10,56 +10,106 @@
 
 #include "box_index.hpp"
 
+#include <hlr/hidden_line/parallel.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace hlr::hidden_line {
 namespace detail {
 
+// A piece of a source in a sort's list, with its box.
+template <class K>
+struct Item {
+  clip::Polygon<K> polygon;
+  std::uint32_t source;
+  CGAL::Bbox_2 box;
+};
+
+template <class K>
+CGAL::Bbox_2 box_of(const clip::Polygon<K>& p) {
+  CGAL::Bbox_2 box;
+  for (const auto& q : p.outer.points) box += Geometry<K>::bbox(q);
+  return box;
+}
+
+// Rough depth order: the nearest corner of each source, in double (only a heuristic).
+template <class K>
+std::vector<double> rough_depths(const std::vector<SourcePolygon<K>>& polygons) {
+  using G = Geometry<K>;
+  std::vector<double> nearest(polygons.size());
+  for (std::size_t s = 0; s < polygons.size(); ++s) {
+    const auto& sp = polygons[s];
+    const double a = CGAL::to_double(sp.plane.a), b = CGAL::to_double(sp.plane.b), c = CGAL::to_double(sp.plane.c);
+    double z = -HUGE_VAL;
+    for (const auto& p : sp.polygon.outer.points)
+      z = std::max(z, a * CGAL::to_double(G::x(p)) + b * CGAL::to_double(G::y(p)) + c);
+    nearest[s] = z;
+  }
+  return nearest;
+}
+
+// The support lines one tile's sort reads and appends its penetration cuts to. Alone, that is the
+// sources' own table. Beside other tiles, which read the same table at the same time, it is a copy
+// made at the first cut; the cuts go to the sources' table after all tiles, in tile order.
+template <class K>
+class TileLines {
+ public:
+  TileLines(clip::LineTable<K>& lines, std::vector<LineOrigin>& origins, bool alone)
+      : shared_(lines), shared_origins_(origins), alone_(alone), base_(lines.size()) {}
+  const clip::LineTable<K>& table() const { return copy_.empty() ? shared_ : copy_; }
+  clip::LineId add(const clip::SupportLine<K>& line, const LineOrigin& origin) {
+    if (alone_) {
+      shared_.push_back(line);
+      shared_origins_.push_back(origin);
+      return static_cast<clip::LineId>(shared_.size() - 1);
+    }
+    if (copy_.empty()) copy_ = shared_;
+    copy_.push_back(line);
+    origins_.push_back(origin);
+    return static_cast<clip::LineId>(copy_.size() - 1);
+  }
+  // Appends this tile's cuts to the sources' table; returns what to add to their ids.
+  std::size_t append_to_shared() {
+    const std::size_t offset = shared_.size() - base_;
+    if (!copy_.empty()) shared_.insert(shared_.end(), copy_.begin() + std::ptrdiff_t(base_), copy_.end());
+    shared_origins_.insert(shared_origins_.end(), origins_.begin(), origins_.end());
+    return offset;
+  }
+  std::size_t base() const { return base_; }
+
+ private:
+  clip::LineTable<K>& shared_;
+  std::vector<LineOrigin>& shared_origins_;
+  bool alone_;
+  std::size_t base_;
+  clip::LineTable<K> copy_;
+  std::vector<LineOrigin> origins_;
+};
+
+// The area sort of one list: sources, or their pieces within one tile, that nothing outside the
+// list covers.
 template <class K>
 class AreaSort {
   using G = Geometry<K>;
   using FT = typename G::FT;
   using P = typename G::Point;
   using Polygon = clip::Polygon<K>;
-
-  struct Item {
-    Polygon polygon;
-    std::uint32_t source;
-    CGAL::Bbox_2 box;
-  };
+  using Item = detail::Item<K>;
   enum class Relation { behind, ahead, coplanar, mixed };
 
  public:
-  AreaSort(Sources<K>& sources, const AreaSortOptions& options) : src_(sources), options_(options) {
-    // Rough depth order: the nearest corner of each source, in double (only a heuristic).
-    nearest_.resize(src_.polygons.size());
-    for (std::size_t s = 0; s < src_.polygons.size(); ++s) {
-      const auto& sp = src_.polygons[s];
-      const double a = CGAL::to_double(sp.plane.a), b = CGAL::to_double(sp.plane.b), c = CGAL::to_double(sp.plane.c);
-      double z = -HUGE_VAL;
-      for (const P& p : sp.polygon.outer.points)
-        z = std::max(z, a * CGAL::to_double(G::x(p)) + b * CGAL::to_double(G::y(p)) + c);
-      nearest_[s] = z;
-    }
-  }
+  AreaSort(const std::vector<SourcePolygon<K>>& polygons, const std::vector<double>& nearest, TileLines<K>& lines,
+           const AreaSortOptions& options)
+      : polygons_(polygons), nearest_(nearest), lines_(lines), options_(options) {}
 
-  VisibilityMap<K> run() {
-    std::vector<Item> list;
-    list.reserve(src_.polygons.size());
-    for (std::uint32_t s = 0; s < src_.polygons.size(); ++s)
-      list.push_back({src_.polygons[s].polygon, s, box_of(src_.polygons[s].polygon)});
+  VisibilityMap<K> run(std::vector<Item> list) {
     resolve(list);
     return std::move(map_);
   }
 
  private:
-  static CGAL::Bbox_2 box_of(const Polygon& p) {
-    CGAL::Bbox_2 box;
-    for (const P& q : p.outer.points) box += G::bbox(q);
-    return box;
-  }
-
   // Whether the line through an edge of one outer contour has that contour on its closed left
   // side and the other outer contour on its closed right side: then the polygons' interiors are
   // disjoint, and clipping one by the other would cut nothing. Mesh neighbours, whose boxes always
@@ -68,6 +118,16 @@ class AreaSort {
   static bool separated(const clip::Contour<K>& a, const clip::Contour<K>& b) {
     constexpr std::size_t kMaxCorners = 16;
     if (a.size() > kMaxCorners || b.size() > kMaxCorners) return false;
+    // Two triangles with an edge each on one support line, run in opposite directions (mesh
+    // neighbours): each lies on its own closed side of the line, without an orientation test. On
+    // the exact kernel only, where corners lie on their support lines exactly.
+    if constexpr (G::exact_constructions)
+      if (a.size() == 3 && b.size() == 3)
+        for (std::size_t i = 0; i < 3; ++i)
+          for (std::size_t j = 0; j < 3; ++j)
+            if (a.lines[i] == b.lines[j] &&
+                G::compare_xy(a.points[i], a.points[(i + 1) % 3]) == -G::compare_xy(b.points[j], b.points[(j + 1) % 3]))
+              return true;
     auto separates = [](const clip::Contour<K>& own, const clip::Contour<K>& other) {
       const std::size_t n = own.size();
       for (std::size_t i = 0; i < n; ++i) {
@@ -95,8 +155,8 @@ class AreaSort {
 
   // Where piece (of source s) lies relative to the plane of source f, over all of the piece.
   Relation relation(const Polygon& piece, std::uint32_t s, std::uint32_t f) const {
-    const auto& ps = src_.polygons[s].plane;
-    const auto& pf = src_.polygons[f].plane;
+    const auto& ps = polygons_[s].plane;
+    const auto& pf = polygons_[f].plane;
     const FT da = ps.a - pf.a, db = ps.b - pf.b, dc = ps.c - pf.c;
     bool nearer_somewhere = false, farther_somewhere = false;
     // The depth difference is linear: its extremes are at corners of the outer contour.
@@ -111,19 +171,15 @@ class AreaSort {
     return Relation::coplanar;
   }
 
-  clip::LineId add_line(const P& a, const P& b, LineOrigin origin) {
-    src_.lines.push_back({a, b});
-    src_.line_origins.push_back(origin);
-    return static_cast<clip::LineId>(src_.lines.size() - 1);
-  }
+  clip::LineId add_line(const P& a, const P& b, LineOrigin origin) { return lines_.add({a, b}, origin); }
 
   // Splits a piece of source s along the line where its plane meets the plane of f: returns the
   // part nearer than f and the part farther. The cut is an exact half-plane clip whose only edge
   // that can reach the piece lies on that line.
   std::pair<std::vector<Polygon>, std::vector<Polygon>> split(const Polygon& piece, std::uint32_t s, std::uint32_t f) {
     ++map_.stats.penetration_splits;
-    const auto& ps = src_.polygons[s].plane;
-    const auto& pf = src_.polygons[f].plane;
+    const auto& ps = polygons_[s].plane;
+    const auto& pf = polygons_[f].plane;
     const FT da = ps.a - pf.a, db = ps.b - pf.b, dc = ps.c - pf.c;  // nearer where da x + db y + dc > 0
     const CGAL::Bbox_2 box = box_of(piece);
     auto widen = [](double v, double dir) { return v + dir * (1 + 1e-6 * std::abs(v)); };
@@ -167,7 +223,7 @@ class AreaSort {
     clip::Polygon<K> half_plane{std::move(half), {}};
     if (G::sign(clip::twice_signed_area(half_plane.outer)) <= 0)
       throw clip::ClipError("penetration cut is not a proper half-plane");
-    clip::ClipRegion<K> region(std::move(half_plane), src_.lines, crossings());
+    clip::ClipRegion<K> region(std::move(half_plane), lines_.table(), crossings());
     auto parts = clip::clip_polygon(piece, region);
     return {std::move(parts.inside), std::move(parts.outside)};
   }
@@ -219,7 +275,7 @@ class AreaSort {
   // that item's place in the order (its slot). A loose grid of the live pieces' boxes gives each
   // front the pieces it can cut, so no front scans the whole list.
   void resolve(std::vector<Item>& list) {
-    if (++depth_ > src_.polygons.size() + 1) throw clip::ClipError("area sort recursion does not converge");
+    if (++depth_ > polygons_.size() + 1) throw clip::ClipError("area sort recursion does not converge");
     std::stable_sort(list.begin(), list.end(), [&](const Item& x, const Item& y) { return nearer(x, y); });
 
     CGAL::Bbox_2 domain;
@@ -256,7 +312,7 @@ class AreaSort {
           ++map_.stats.clips;
           subjects.clear();
           for (std::uint32_t other : cut) subjects.push_back(std::move(pieces[other].polygon));
-          clip::ClipRegion<K> region(front.polygon, src_.lines, crossings());
+          clip::ClipRegion<K> region(front.polygon, lines_.table(), crossings());
           auto results = clip::clip_list<K>(subjects, region);
           for (std::size_t i = 0; i < cut.size(); ++i) {
             const std::uint32_t other = cut[i], source = pieces[other].source, home = slot_of[other];
@@ -284,7 +340,7 @@ class AreaSort {
         ++map_.stats.recursions;
         std::vector<Polygon> remaining{std::move(front.polygon)};
         for (const Item& a : ahead) {
-          clip::ClipRegion<K> region(a.polygon, src_.lines, crossings());
+          clip::ClipRegion<K> region(a.polygon, lines_.table(), crossings());
           std::vector<Polygon> outside;
           for (auto& r : clip::clip_list<K>(remaining, region)) {
             for (auto& piece : r.inside) hide(std::move(piece), front.source, a.source);
@@ -300,19 +356,133 @@ class AreaSort {
     --depth_;
   }
 
-  Sources<K>& src_;
+  const std::vector<SourcePolygon<K>>& polygons_;
+  const std::vector<double>& nearest_;
+  TileLines<K>& lines_;
   AreaSortOptions options_;
   clip::CrossingCache<K> crossings_;
-  std::vector<double> nearest_;
   std::size_t depth_ = 0;
   VisibilityMap<K> map_;
 };
+
+// Screen subdivision (Weiler and Atherton): vertical strips at exact abscissas, each sorted on its
+// own, in parallel. Pieces in different strips have disjoint images, so no piece of one can hide a
+// piece of another; a source across a border is clipped exactly into one piece per strip. The
+// strips depend on the sources only, never on the number of threads, so neither does the result.
+// On the exact kernel only: elsewhere the border clips would round.
+template <class K>
+std::vector<std::vector<Item<K>>> strips(Sources<K>& sources, std::size_t sources_per_strip) {
+  using G = Geometry<K>;
+  using FT = typename G::FT;
+  constexpr std::size_t kMaxStrips = 8;
+  const std::size_t n = sources.polygons.size();
+  std::vector<Item<K>> items;
+  items.reserve(n);
+  for (std::uint32_t s = 0; s < n; ++s)
+    items.push_back({sources.polygons[s].polygon, s, box_of(sources.polygons[s].polygon)});
+  const std::size_t count = sources_per_strip == 0 ? 1 : std::min(kMaxStrips, n / sources_per_strip);
+  if (!G::exact_constructions || count < 2) return {std::move(items)};
+
+  // Borders at quantiles of the boxes' centres, so that strips hold about as many sources.
+  std::vector<double> centres;
+  CGAL::Bbox_2 domain;
+  for (const auto& item : items) {
+    centres.push_back((item.box.xmin() + item.box.xmax()) / 2);
+    domain += item.box;
+  }
+  std::sort(centres.begin(), centres.end());
+  std::vector<double> borders;  // strip j is [borders[j - 1], borders[j]], unbounded at the ends
+  for (std::size_t j = 1; j < count; ++j) {
+    const double x = centres[j * n / count];
+    if (borders.empty() || x > borders.back()) borders.push_back(x);
+  }
+  auto widen = [](double v, double dir) { return v + dir * (1 + 1e-6 * std::abs(v)); };
+  const double x_lo = widen(std::min(domain.xmin(), borders.front()), -1);
+  const double x_hi = widen(std::max(domain.xmax(), borders.back()), 1);
+  const double y_lo = widen(domain.ymin(), -1), y_hi = widen(domain.ymax(), 1);
+  std::vector<double> xs{x_lo};
+  xs.insert(xs.end(), borders.begin(), borders.end());
+  xs.push_back(x_hi);
+  auto add_line = [&](double ax, double ay, double bx, double by) {
+    sources.lines.push_back({G::point(FT(ax), FT(ay)), G::point(FT(bx), FT(by))});
+    sources.line_origins.push_back({});
+    return static_cast<clip::LineId>(sources.lines.size() - 1);
+  };
+  const clip::LineId bottom = add_line(x_lo, y_lo, x_hi, y_lo), top = add_line(x_hi, y_hi, x_lo, y_hi);
+  std::vector<clip::LineId> verticals;
+  for (double x : xs) verticals.push_back(add_line(x, y_lo, x, y_hi));
+  std::vector<clip::ClipRegion<K>> regions;
+  for (std::size_t j = 0; j + 1 < xs.size(); ++j) {
+    clip::Contour<K> rect;
+    rect.points = {G::point(FT(xs[j]), FT(y_lo)), G::point(FT(xs[j + 1]), FT(y_lo)),
+                   G::point(FT(xs[j + 1]), FT(y_hi)), G::point(FT(xs[j]), FT(y_hi))};
+    rect.lines = {bottom, verticals[j + 1], top, verticals[j]};
+    regions.emplace_back(clip::Polygon<K>{std::move(rect), {}}, sources.lines);
+  }
+
+  std::vector<std::vector<Item<K>>> out(regions.size());
+  for (auto& item : items) {
+    // The strips the box reaches; a box within one strip's closure needs no clip.
+    const std::size_t first = std::size_t(std::upper_bound(borders.begin(), borders.end(), item.box.xmin()) - borders.begin());
+    const std::size_t last = std::size_t(std::lower_bound(borders.begin(), borders.end(), item.box.xmax()) - borders.begin());
+    if (first >= last) {
+      out[std::min(first, last)].push_back(std::move(item));
+      continue;
+    }
+    for (std::size_t j = first; j <= last; ++j)
+      for (auto& piece : clip::clip_polygon(item.polygon, regions[j]).inside) {
+        const CGAL::Bbox_2 box = box_of(piece);
+        out[j].push_back({std::move(piece), item.source, box});
+      }
+  }
+  return out;
+}
 
 }  // namespace detail
 
 template <class K>
 VisibilityMap<K> area_sort(Sources<K>& sources, const AreaSortOptions& options) {
-  return detail::AreaSort<K>(sources, options).run();
+  using namespace detail;
+  const std::vector<double> nearest = rough_depths(sources.polygons);
+  std::vector<std::vector<Item<K>>> lists = strips(sources, options.sources_per_strip);
+  if (lists.size() == 1) {
+    TileLines<K> lines(sources.lines, sources.line_origins, true);
+    return AreaSort<K>(sources.polygons, nearest, lines, options).run(std::move(lists.front()));
+  }
+  std::vector<VisibilityMap<K>> maps(lists.size());
+  std::vector<std::unique_ptr<TileLines<K>>> lines(lists.size());
+  for (auto& l : lines) l = std::make_unique<TileLines<K>>(sources.lines, sources.line_origins, false);
+  parallel_chunks(lists.size(), 1, [&](const auto& range) {
+    for (std::size_t j = range.begin(); j != range.end(); ++j)
+      maps[j] = AreaSort<K>(sources.polygons, nearest, *lines[j], options).run(std::move(lists[j]));
+  });
+  // In strip order: each strip's cuts get the ids after the strips before it.
+  VisibilityMap<K> out;
+  for (std::size_t j = 0; j < maps.size(); ++j) {
+    const std::size_t base = lines[j]->base(), offset = lines[j]->append_to_shared();
+    auto renumber = [&](std::vector<Fragment<K>>& fragments) {
+      for (auto& f : fragments) {
+        auto fix = [&](clip::Contour<K>& c) {
+          for (auto& id : c.lines)
+            if (id >= base) id = static_cast<clip::LineId>(id + offset);
+        };
+        fix(f.polygon.outer);
+        for (auto& h : f.polygon.holes) fix(h);
+      }
+    };
+    if (offset > 0) {
+      renumber(maps[j].visible);
+      renumber(maps[j].hidden);
+    }
+    auto& m = maps[j];
+    out.visible.insert(out.visible.end(), std::make_move_iterator(m.visible.begin()), std::make_move_iterator(m.visible.end()));
+    out.hidden.insert(out.hidden.end(), std::make_move_iterator(m.hidden.begin()), std::make_move_iterator(m.hidden.end()));
+    out.stats.clips += m.stats.clips;
+    out.stats.recursions += m.stats.recursions;
+    out.stats.penetration_splits += m.stats.penetration_splits;
+    out.stats.coplanar_ties += m.stats.coplanar_ties;
+  }
+  return out;
 }
 
 }  // namespace hlr::hidden_line

@@ -14,13 +14,12 @@
 #pragma once
 
 #include <hlr/hidden_line/lines.hpp>
+#include <hlr/hidden_line/parallel.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
 
 #include "box_index.hpp"
 
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -155,9 +154,9 @@ class Classifier {
 
  public:
   Classifier(const std::vector<Mesh>& meshes, const Sources<K>& sources, const VisibilityMap<K>& map)
-      : meshes_(meshes), sources_(sources), map_(map), view_points_(sources.view_points),
+      : sources_(sources), map_(map), view_points_(sources.view_points),
         grid_(domain(map), map.visible.size()),
-        edge_on_grid_(domain(map), std::max<std::size_t>(sources.edge_on_faces.size(), 1)) {
+        edge_on_grid_(domain(map), std::max<std::size_t>(sources.edge_on_edges.size(), 1)) {
     source_of_face_.resize(meshes.size());
     for (std::size_t m = 0; m < meshes.size(); ++m) source_of_face_[m].assign(meshes[m].faces.size(), -1);
     for (std::size_t s = 0; s < sources.polygons.size(); ++s)
@@ -174,11 +173,9 @@ class Classifier {
         }
     }
     for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid_.insert(i, polygon_bbox(map.visible[i].polygon));
-    for (std::uint32_t i = 0; i < sources.edge_on_faces.size(); ++i) {
-      const auto [m, f] = sources.edge_on_faces[i];
-      CGAL::Bbox_2 box;
-      for (std::uint32_t v : meshes[m].faces[f]) box += G::bbox(image(m, v));
-      edge_on_grid_.insert(i, box);
+    for (std::uint32_t i = 0; i < sources.edge_on_edges.size(); ++i) {
+      const auto [m, v0, v1] = sources.edge_on_edges[i];
+      edge_on_grid_.insert(i, G::bbox(image(m, v0)) + G::bbox(image(m, v1)));
     }
   }
 
@@ -325,31 +322,27 @@ class Classifier {
         occluders_.push_back({lo, hi, &depth});
     });
 
+    // Faces seen edge-on cover the line where their edges' images run along it.
     edge_on_grid_.query(line.bbox(), [&](std::uint32_t i) {
-      const auto [m, f] = sources_.edge_on_faces[i];
-      const auto& face = meshes_[m].faces[f];
-      for (std::uint32_t v : face)
-        if (G::orientation(pa, pb, image(m, v)) != 0) return;  // meets the line in one point at most
-      for (std::size_t k = 0; k < face.size(); ++k) {
-        const std::uint32_t vu = face[k], vw = face[(k + 1) % face.size()];
-        const ViewPoint<K>&u = view_points_[m][vu], &w = view_points_[m][vw];
-        const P &pu = image(m, vu), &pw = image(m, vw);
-        if (G::equal(pu, pw)) continue;  // an edge along the view direction covers one point
-        const FT tu = params.at_point(pu), tw = params.at_point(pw);
-        FT lo = std::min(tu, tw), hi = std::max(tu, tw);
-        if (hi <= FT(0) || lo >= FT(1)) continue;
-        lo = std::max(lo, FT(0));
-        hi = std::min(hi, FT(1));
-        // The edge's depth at line parameter t: u.z + (t - tu) / (tw - tu) (w.z - u.z).
-        const FT slope = (w.z - u.z) / (tw - tu);
-        const FT f0 = u.z - tu * slope - a.z;
-        const FT f1 = u.z + (FT(1) - tu) * slope - b.z;
-        Depth<K>& d = scratch.edge_on.emplace_back();
-        d.sign0 = G::sign(f0);
-        d.sign1 = G::sign(f1);
-        if (d.crosses()) d.t0 = f0 / (f0 - f1);
-        occluders_.push_back({lo, hi, &d});
-      }
+      const auto [m, vu, vw] = sources_.edge_on_edges[i];
+      const ViewPoint<K>&u = view_points_[m][vu], &w = view_points_[m][vw];
+      const P &pu = image(m, vu), &pw = image(m, vw);
+      if (G::equal(pu, pw)) return;  // an edge along the view direction covers one point
+      if (G::orientation(pa, pb, pu) != 0 || G::orientation(pa, pb, pw) != 0) return;
+      const FT tu = params.at_point(pu), tw = params.at_point(pw);
+      FT lo = std::min(tu, tw), hi = std::max(tu, tw);
+      if (hi <= FT(0) || lo >= FT(1)) return;
+      lo = std::max(lo, FT(0));
+      hi = std::min(hi, FT(1));
+      // The edge's depth at line parameter t: u.z + (t - tu) / (tw - tu) (w.z - u.z).
+      const FT slope = (w.z - u.z) / (tw - tu);
+      const FT f0 = u.z - tu * slope - a.z;
+      const FT f1 = u.z + (FT(1) - tu) * slope - b.z;
+      Depth<K>& d = scratch.edge_on.emplace_back();
+      d.sign0 = G::sign(f0);
+      d.sign1 = G::sign(f1);
+      if (d.crosses()) d.t0 = f0 / (f0 - f1);
+      occluders_.push_back({lo, hi, &d});
     });
 
     // Split points: occluder ends and the zeros of f inside each occluder.
@@ -388,7 +381,6 @@ class Classifier {
   }
   const P& image(std::uint32_t mesh, std::uint32_t v) const { return sources_.image_points[mesh][v]; }
 
-  const std::vector<Mesh>& meshes_;
   const Sources<K>& sources_;
   const VisibilityMap<K>& map_;
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
@@ -449,7 +441,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
   }
 
   tbb::enumerable_thread_specific<typename detail::Classifier<K>::Scratch> scratch;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.lines.size(), 16), [&](const auto& range) {
+  parallel_chunks(out.lines.size(), 16, [&](const auto& range) {
     auto& mine = scratch.local();
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       FeatureLine<K>& line = out.lines[i];

@@ -28,9 +28,10 @@ struct MeshTopology {
   std::size_t closed_components = 0, open_components = 0, inward_components = 0;
 };
 
+// Predicates only, on input doubles: exact with Epick, and without Epeck's lazy nodes.
+using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
+
 inline MeshTopology analyse_mesh(const Mesh& mesh) {
-  // Predicates only, on input doubles: exact with Epick, and without Epeck's lazy nodes.
-  using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
   const std::size_t nf = mesh.faces.size();
   MeshTopology t;
   auto point = [&](std::uint32_t v) {
@@ -152,6 +153,31 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
         keep[f] = true;
       }
     }
+
+    // The edges of the edge-on faces, but those inside a region of coplanar ones: between two
+    // triangles of one coplanar group that lie on opposite sides of it (decided on input doubles).
+    auto third_corner = [&](std::uint32_t f, std::uint64_t key) {
+      for (std::uint32_t v : mesh.faces[f])
+        if (v != edge_low(key) && v != edge_high(key)) return v;
+      return mesh.faces[f][0];
+    };
+    auto inside_region = [&](EdgeUses first, EdgeUses last) {
+      if (!options.consolidate || last - first != 2) return false;
+      const EdgeUse &u = first[0], &w = first[1];
+      if (facing[u.face] != 0 || facing[w.face] != 0 || u.forward == w.forward ||
+          topo.coplanar_group[u.face] != topo.coplanar_group[w.face])
+        return false;
+      if (mesh.faces[u.face].size() != 3 || mesh.faces[w.face].size() != 3) return false;
+      const auto& v = mesh.vertices;
+      auto point = [&](std::uint32_t i) { return detail::IK::Point_3(v[i][0], v[i][1], v[i][2]); };
+      return CGAL::coplanar_orientation(point(edge_low(u.key)), point(edge_high(u.key)), point(third_corner(u.face, u.key)),
+                                        point(third_corner(w.face, w.key))) == CGAL::NEGATIVE;
+    };
+    for_each_edge(topo.uses, [&](EdgeUses first, EdgeUses last) {
+      if (std::none_of(first, last, [&](const EdgeUse& u) { return facing[u.face] == 0; })) return;
+      if (inside_region(first, last)) return;
+      out.edge_on_edges.push_back({mi, edge_low(first->key), edge_high(first->key)});
+    });
 
     // A face's contour, counter-clockwise in the view.
     auto face_contour = [&](std::uint32_t f) {

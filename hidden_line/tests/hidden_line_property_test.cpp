@@ -18,12 +18,16 @@ namespace {
 
 void check_soup(const Soup& soup) {
   const std::vector<Mesh> meshes{to_mesh(soup)};
-  const std::string context = "view " + view_text(soup.view) + "\n" + off_text(meshes[0]);
   hidden_line::SourceOptions options;
   options.remove_back_faces = false;
+  // Screen subdivision: none, or strips of one to three sources (the default cuts no soup).
+  hidden_line::AreaSortOptions sort;
+  sort.sources_per_strip = *rc::gen::element<std::size_t>(0, 1, 2, 3);
+  const std::string context = "view " + view_text(soup.view) + ", " + std::to_string(sort.sources_per_strip) +
+                              " sources per strip\n" + off_text(meshes[0]);
   Solved solved;
   try {
-    solved = solve<ExactKernel>(meshes, soup.view, options);
+    solved = solve<ExactKernel>(meshes, soup.view, options, sort);
   } catch (const std::exception& e) {
     RC_FAIL(std::string("exception: ") + e.what() + "\n" + context);
   }

@@ -53,6 +53,12 @@ XMap solve_and_check(const std::vector<Mesh>& meshes, const View& view, bool rem
                            << report.summary();
   EXPECT_EQ(report.visible_checked, solved.map.visible.size());
   EXPECT_EQ(report.hidden_checked, solved.map.hidden.size());
+  // Cut into strips of two sources, the solution is another partition that passes the same checks.
+  hidden_line::AreaSortOptions strips;
+  strips.sources_per_strip = 2;
+  const CheckReport in_strips =
+      check_map(oracle, solve<ExactKernel>(meshes, view, with_back_faces(remove_back_faces), strips).map, options);
+  EXPECT_TRUE(in_strips.ok()) << label << " view " << view.name << " in strips: " << in_strips.summary();
   return std::move(solved.map);
 }
 

@@ -23,7 +23,7 @@ struct LineRun {
 };
 
 inline LineRun run_lines(const std::vector<Mesh>& meshes, const View& view, const hidden_line::LineOptions& options = {},
-                         bool remove_back_faces = true) {
+                         bool remove_back_faces = true, const hidden_line::AreaSortOptions& sort = {}) {
   using clock = std::chrono::steady_clock;
   auto since = [](clock::time_point t) { return std::chrono::duration<double>(clock::now() - t).count(); };
   LineRun out;
@@ -34,7 +34,7 @@ inline LineRun run_lines(const std::vector<Mesh>& meshes, const View& view, cons
   auto sources = hidden_line::build_sources<ExactKernel>(meshes, frame, source_options);
   out.sources_seconds = since(t);
   t = clock::now();
-  auto map = hidden_line::area_sort<ExactKernel>(sources);
+  auto map = hidden_line::area_sort<ExactKernel>(sources, sort);
   out.sort_seconds = since(t);
   t = clock::now();
   const auto intersections = hidden_line::intersection_lines(meshes);

@@ -54,15 +54,19 @@ LineReport run_and_check_random_options(const std::vector<Mesh>& meshes, const V
   hidden_line::LineOptions options;
   options.features.crease_degrees = *rc::gen::element(30.0, 30.0, 0.0, 45.0, 90.0, 135.0, 180.0);
   const bool remove_back_faces = *rc::gen::arbitrary<bool>();
+  // Screen subdivision: none, the default (which these scenes are too small for), or strips of one
+  // to three sources, so that nearly every scene is cut.
+  hidden_line::AreaSortOptions sort;
+  sort.sources_per_strip = *rc::gen::element<std::size_t>(0, 4096, 1, 2, 3);
 
   std::ostringstream context;
   context << "view " << view_text(view) << ", crease " << options.features.crease_degrees << " degrees, back faces "
-          << (remove_back_faces ? "removed" : "kept") << "\n";
+          << (remove_back_faces ? "removed" : "kept") << ", " << sort.sources_per_strip << " sources per strip\n";
   for (std::size_t m = 0; m < meshes.size(); ++m) context << "mesh " << m << ":\n" << off_text(meshes[m]);
 
   LineRun run;
   try {
-    run = run_lines(meshes, view, options, remove_back_faces);
+    run = run_lines(meshes, view, options, remove_back_faces, sort);
   } catch (const std::exception& e) {
     RC_FAIL(std::string("exception: ") + e.what() + "\n" + context.str());
   }

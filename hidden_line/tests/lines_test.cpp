@@ -226,6 +226,30 @@ TEST(LinesHand, EdgeOnSheetHidesTheEdgeBehindIt) {
   }
 }
 
+// A region of coplanar faces seen edge-on covers what its boundary covers: the sheet cut into a
+// fan of triangles draws as the one quad does, and a pair of triangles folded onto each other keeps
+// the edge they share, which is the region's front.
+TEST(LinesHand, EdgeOnRegionsCoverByTheirBoundary) {
+  const View front = view_named("front");
+  auto meshes = sheet_before_edge();
+  const LineSetX quad = run_and_check(meshes, front, "sheet before edge");
+  meshes[0] = make_mesh("sheet", {{0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {0, 1, 1}, {1, 0.5, 1}},
+                        {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
+  const LineSetX fan = run_and_check(meshes, front, "fan sheet before edge");
+  EXPECT_EQ(line_signature(fan, false), line_signature(quad, false));
+
+  // The edge 0-1 (y = 0) is nearest; the folded triangles' other edges are at y >= 0.5 over x = 1,
+  // behind the bottom edge of the triangle in y = 0.25.
+  const std::vector<Mesh> folded{
+      make_mesh("folded", {{0, 0, 1}, {2, 0, 1}, {1, 1, 1}, {1, 0.5, 1}}, {{0, 1, 2}, {1, 0, 3}}),
+      make_mesh("triangle", {{0.5, 0.25, 1}, {1.5, 0.25, 1}, {1, 0.25, 2}}, {{0, 1, 2}})};
+  const LineSetX set = run_and_check(folded, front, "folded sheet before edge");
+  const auto* bottom = find_line(set, 1, 0, 1);
+  ASSERT_TRUE(bottom);
+  ASSERT_EQ(bottom->pieces.size(), 1u);
+  EXPECT_FALSE(bottom->pieces[0].visible);
+}
+
 // hidden_line/tests/reflex_prism.off: an L-shaped prism whose top and bottom hexagons start at
 // their reflex corner's neighbour, so that the first three corners of each turn the wrong way (a
 // normal taken from them points inward).
@@ -605,6 +629,13 @@ TEST_P(LineFixtureViews, Contract) {
   // Winding is no input: the same mesh with every face reversed draws the same lines.
   EXPECT_EQ(line_signature(run_lines(reversed_meshes(meshes), p.view).set), line_signature(set))
       << p.file << " reversed";
+  // Nor is the screen subdivision: strips of one, two or five sources draw the same lines.
+  for (std::size_t per_strip : {1, 2, 5}) {
+    hidden_line::AreaSortOptions sort;
+    sort.sources_per_strip = per_strip;
+    EXPECT_EQ(line_signature(run_lines(meshes, p.view, {}, true, sort).set), line_signature(set))
+        << p.file << " in strips of " << per_strip;
+  }
 }
 
 std::vector<FixtureView> fixture_views() {

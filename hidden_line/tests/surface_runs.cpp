@@ -77,14 +77,15 @@ std::string test_name(const std::string& file) {
 }
 
 template <class K>
-Solved solve(const std::vector<Mesh>& meshes, const View& view, const hidden_line::SourceOptions& options) {
+Solved solve(const std::vector<Mesh>& meshes, const View& view, const hidden_line::SourceOptions& options,
+             const hidden_line::AreaSortOptions& sort) {
   using clock = std::chrono::steady_clock;
   Solved out;
   const ViewFrame<K> frame(view);
   auto t0 = clock::now();
   auto sources = hidden_line::build_sources<K>(meshes, frame, options);
   auto t1 = clock::now();
-  auto map = hidden_line::area_sort<K>(sources);
+  auto map = hidden_line::area_sort<K>(sources, sort);
   auto t2 = clock::now();
   out.sources_seconds = std::chrono::duration<double>(t1 - t0).count();
   out.sort_seconds = std::chrono::duration<double>(t2 - t1).count();
@@ -92,8 +93,11 @@ Solved solve(const std::vector<Mesh>& meshes, const View& view, const hidden_lin
   return out;
 }
 
-template Solved solve<ExactKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&);
-template Solved solve<EpickKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&);
-template Solved solve<DoubleKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&);
+template Solved solve<ExactKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&,
+                           const hidden_line::AreaSortOptions&);
+template Solved solve<EpickKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&,
+                           const hidden_line::AreaSortOptions&);
+template Solved solve<DoubleKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&,
+                           const hidden_line::AreaSortOptions&);
 
 }  // namespace hlr::hltest

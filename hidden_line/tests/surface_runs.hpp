@@ -43,11 +43,15 @@ struct Solved {
 };
 
 template <class K>
-Solved solve(const std::vector<Mesh>& meshes, const View& view, const hidden_line::SourceOptions& options);
+Solved solve(const std::vector<Mesh>& meshes, const View& view, const hidden_line::SourceOptions& options,
+             const hidden_line::AreaSortOptions& sort = {});
 
-extern template Solved solve<ExactKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&);
-extern template Solved solve<EpickKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&);
-extern template Solved solve<DoubleKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&);
+extern template Solved solve<ExactKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&,
+                                  const hidden_line::AreaSortOptions&);
+extern template Solved solve<EpickKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&,
+                                  const hidden_line::AreaSortOptions&);
+extern template Solved solve<DoubleKernel>(const std::vector<Mesh>&, const View&, const hidden_line::SourceOptions&,
+                                  const hidden_line::AreaSortOptions&);
 
 // Faces of the sources, per mesh, as the multiset of their face lists (for the consolidation
 // checks): each list restricted to the faces for which keep(mesh, face) holds, empty lists dropped.

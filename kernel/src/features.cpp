@@ -3,9 +3,12 @@
 #include <hlr/kernel/mesh_edges.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Interval_nt.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace hlr {
 namespace {
@@ -14,27 +17,92 @@ using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 
 // A face's normal, oriented by its corner order: twice its vector area, the sum of the fan
 // triangles' cross products from the first corner. Right for any planar simple polygon, convex or
-// not (three corners alone give the wrong side at a reflex corner).
-EK::Vector_3 face_normal(const Mesh& mesh, const std::vector<std::uint32_t>& face) {
-  auto point = [&](std::uint32_t v) {
-    const auto& p = mesh.vertices[v];
-    return EK::Point_3(p[0], p[1], p[2]);
+// not (three corners alone give the wrong side at a reflex corner). Over NT: intervals (under
+// CGAL::Protect_FPU_rounding) to filter, EK::FT to decide what they cannot.
+template <class NT>
+std::array<NT, 3> face_normal(const Mesh& mesh, const std::vector<std::uint32_t>& face) {
+  using V = std::array<NT, 3>;
+  auto sub = [&](std::uint32_t a, std::uint32_t b) -> V {
+    const auto &p = mesh.vertices[a], &q = mesh.vertices[b];
+    return V{NT(p[0]) - NT(q[0]), NT(p[1]) - NT(q[1]), NT(p[2]) - NT(q[2])};
   };
-  const EK::Point_3 origin = point(face[0]);
-  EK::Vector_3 sum = CGAL::cross_product(point(face[1]) - origin, point(face[2]) - origin);
-  for (std::size_t k = 3; k < face.size(); ++k)
-    sum = sum + CGAL::cross_product(point(face[k - 1]) - origin, point(face[k]) - origin);
+  V sum{NT(0), NT(0), NT(0)};
+  for (std::size_t k = 2; k < face.size(); ++k) {
+    const V u = sub(face[k - 1], face[0]), w = sub(face[k], face[0]);
+    sum = V{sum[0] + (u[1] * w[2] - u[2] * w[1]), sum[1] + (u[2] * w[0] - u[0] * w[2]), sum[2] + (u[0] * w[1] - u[1] * w[0])};
+  }
   return sum;
 }
 
-// n1·n2 < c |n1| |n2|, decided exactly by squaring with the signs taken care of.
-bool angle_above(const EK::Vector_3& n1, const EK::Vector_3& n2, double cos_threshold) {
-  const EK::FT s = n1 * n2;
-  const EK::FT c(cos_threshold);
-  const EK::FT q = c * c * n1.squared_length() * n2.squared_length();
-  if (cos_threshold >= 0) return CGAL::is_negative(s) || s * s < q;
-  return CGAL::is_negative(s) && s * s > q;
+template <class NT>
+NT dot(const std::array<NT, 3>& a, const std::array<NT, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
+
+// n1·n2 < c |n1| |n2|, squared with the signs taken care of: exact over EK::FT, possibly
+// uncertain over intervals.
+template <class NT>
+auto angle_above(const std::array<NT, 3>& n1, const std::array<NT, 3>& n2, double cos_threshold) {
+  const NT s = dot(n1, n2);
+  const NT c(cos_threshold);
+  const NT q = c * c * dot(n1, n1) * dot(n2, n2);
+  if (cos_threshold >= 0) return CGAL::is_negative(s) | (s * s < q);
+  return CGAL::is_negative(s) & (s * s > q);
+}
+
+// Normals of every face, decided in interval arithmetic and, where the intervals cannot tell,
+// exactly: the facing signs, and the crease test between two faces.
+class FaceNormals {
+ public:
+  using IA = CGAL::Interval_nt<false>;
+  using FT = EK::FT;
+
+  FaceNormals(const Mesh& mesh, const View& view) : mesh_(mesh), approx_(mesh.faces.size()), exact_(mesh.faces.size()) {
+    facing_.resize(mesh.faces.size());
+    for (int k = 0; k < 3; ++k) toward_viewer_[k] = -view.direction[k];
+    std::vector<std::size_t> undecided;
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const std::array<IA, 3> d{IA(toward_viewer_[0]), IA(toward_viewer_[1]), IA(toward_viewer_[2])};
+      for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        approx_[f] = face_normal<IA>(mesh, mesh.faces[f]);
+        const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(dot(approx_[f], d));
+        if (CGAL::is_certain(sign)) facing_[f] = CGAL::get_certain(sign);
+        else undecided.push_back(f);
+      }
+    }
+    const std::array<FT, 3> d{FT(toward_viewer_[0]), FT(toward_viewer_[1]), FT(toward_viewer_[2])};
+    for (std::size_t f : undecided) facing_[f] = CGAL::sign(dot(exact(f), d));
+  }
+
+  int facing(std::size_t f) const { return facing_[f]; }
+
+  // Whether faces f and g (g's normal times `flip`) meet at more than the crease angle.
+  bool crease(std::size_t f, std::size_t g, int flip, double cos_threshold) {
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      std::array<IA, 3> ng = approx_[g];
+      if (flip < 0) ng = {-ng[0], -ng[1], -ng[2]};
+      const CGAL::Uncertain<bool> above = angle_above(approx_[f], ng, cos_threshold);
+      if (CGAL::is_certain(above)) return CGAL::get_certain(above);
+    }
+    std::array<FT, 3> ng = exact(g);
+    if (flip < 0) ng = {-ng[0], -ng[1], -ng[2]};
+    return angle_above(exact(f), ng, cos_threshold);
+  }
+
+ private:
+  const std::array<FT, 3>& exact(std::size_t f) {
+    if (!exact_[f]) exact_[f] = face_normal<FT>(mesh_, mesh_.faces[f]);
+    return *exact_[f];
+  }
+
+  const Mesh& mesh_;
+  double toward_viewer_[3];
+  std::vector<std::array<IA, 3>> approx_;
+  std::vector<std::optional<std::array<FT, 3>>> exact_;
+  std::vector<int> facing_;
+};
 
 }  // namespace
 
@@ -51,14 +119,7 @@ const char* feature_kind_name(FeatureKind kind) {
 
 std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const FeatureOptions& options) {
   const double cos_threshold = std::cos(options.crease_degrees * std::numbers::pi / 180.0);
-  const EK::Vector_3 toward_viewer(-view.direction[0], -view.direction[1], -view.direction[2]);
-
-  std::vector<EK::Vector_3> normal(mesh.faces.size());
-  std::vector<int> facing(mesh.faces.size());
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    normal[f] = face_normal(mesh, mesh.faces[f]);
-    facing[f] = CGAL::sign(normal[f] * toward_viewer);
-  }
+  FaceNormals normals(mesh, view);
 
   const std::vector<EdgeUse> uses = edge_uses(mesh);
   const ComponentSides sides = component_sides(mesh, uses);
@@ -80,12 +141,12 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
       // A closed solid's front side is its outside, whichever way it is wound; an open or
       // inconsistent mesh has two alike sides, so the edge turns wherever the facings differ.
       const int side = sides.outward[f];
-      const int f_sign = facing[f], g_sign = flip * facing[g];
+      const int f_sign = normals.facing(f), g_sign = flip * normals.facing(g);
       const bool turns = side != 0 ? (f_sign * side > 0) != (g_sign * side > 0) : f_sign != g_sign;
       const bool fan = first[0].fan && first[1].fan;  // inside one non-planar face: crease rule only
       if (turns && !fan) {
         edge.kind = FeatureKind::silhouette;
-      } else if (angle_above(normal[f], flip > 0 ? normal[g] : -normal[g], cos_threshold)) {
+      } else if (normals.crease(f, g, flip, cos_threshold)) {
         edge.kind = FeatureKind::crease;
       } else if (!mesh.face_group.empty() && mesh.face_group[f] != mesh.face_group[g]) {
         edge.kind = FeatureKind::group;

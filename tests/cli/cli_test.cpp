@@ -749,6 +749,19 @@ TEST_F(CliDraw, OneThreadAndTwoDrawTheSameBytes) {
   EXPECT_GE(files, 40u);
 }
 
+TEST_F(CliDraw, OneThreadAndTwoDrawTheSameBytesInStrips) {
+  // A scene large enough for the area sort to cut the image into strips (AreaSortOptions), which
+  // two threads sort side by side.
+  const fs::path mesh = fs::path(HLR_SHARED_SCENES) / "refined_elephant.off";
+  if (!fs::exists(mesh)) GTEST_SKIP() << "no shared scenes at " << HLR_SHARED_SCENES;
+  for (const char* threads : {"1", "2"}) {
+    Outcome run = hlr({"draw", mesh.string(), "--view", "iso", "--threads", threads, "-o",
+                       out(std::string("e") + threads + ".svg").string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  EXPECT_EQ(slurp(out("e1.svg")), slurp(out("e2.svg")));
+}
+
 TEST_F(CliDraw, PredicateStatsCountTheExactKernelsDecisionsOnlyWhenAsked) {
   // HLR_PREDICATE_STATS=1 adds one stderr line per predicate family and changes no line drawn.
   const std::string mesh = (kScenes / "edge_on.off").string();

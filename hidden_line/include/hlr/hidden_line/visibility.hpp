@@ -67,6 +67,10 @@ struct Sources {
   clip::LineTable<K> lines;
   std::vector<LineOrigin> line_origins;  // parallel to lines
   std::vector<std::array<std::uint32_t, 2>> edge_on_faces;  // (mesh, face) of the faces dropped edge-on
+  // (mesh, v0, v1) of the edges of those faces that can cover a line: each edge once, and with
+  // `consolidate` not the edges between two of a region's coplanar triangles (the region covers
+  // what its boundary covers).
+  std::vector<std::array<std::uint32_t, 3>> edge_on_edges;
   std::vector<std::vector<ViewPoint<K>>> view_points;        // per mesh, per input vertex
   std::vector<std::vector<typename Geometry<K>::Point>> image_points;  // the same, projected: the
                                                              // points every source corner shares
@@ -107,9 +111,14 @@ struct VisibilityMap {
 struct AreaSortOptions {
   // The hidden polygon set: `hlr surfaces` writes it; a line drawing needs only the visible one.
   bool keep_hidden = true;
+  // Screen subdivision (exact kernel): the image is cut into vertical strips of about this many
+  // sources each (at most 8), sorted in parallel; 0 never cuts it. Fragments that reach across a
+  // strip border come out as one piece per strip. The strips do not depend on the thread count.
+  std::size_t sources_per_strip = 4096;
 };
 
-// Solves visibility for the sources; appends the lines of penetration splits to sources.lines.
+// Solves visibility for the sources; appends the lines of strip borders and penetration splits to
+// sources.lines.
 template <class K>
 VisibilityMap<K> area_sort(Sources<K>& sources, const AreaSortOptions& options = {});
 

@@ -1,0 +1,20 @@
+// hlr hidden_line, parallel loops: oneTBB over chunks of an index range, run inline when the range
+// is one chunk, so that a small scene does not pay for starting the scheduler. Callers process each
+// index on its own, so results never depend on the number of threads.
+#pragma once
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cstddef>
+
+namespace hlr::hidden_line {
+
+template <class Body>
+void parallel_chunks(std::size_t size, std::size_t grain, const Body& body) {
+  const tbb::blocked_range<std::size_t> all(0, size, grain);
+  if (size <= grain) body(all);
+  else tbb::parallel_for(all, body);
+}
+
+}  // namespace hlr::hidden_line

@@ -102,7 +102,7 @@ int run(const SheetOptions& options) {
   const Scene scene = load_scene(options.meshes);
   LineRunSettings settings = options.lines;
   settings.progress = scene.input.faces >= 10000;
-  const Intersections intersections = find_intersections(scene, settings);  // model space: once for all views
+  const Intersections intersections(scene, settings);  // model space: found once, for all views
   std::vector<exporter::LineDrawing> drawings;
   drawings.reserve(views->size());
   for (std::size_t i = 0; i < views->size(); ++i) {

@@ -11,14 +11,14 @@ packages=(
   libopenmesh-dev libglm-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   # allocator of the hlr program (app/CMakeLists.txt): tcmalloc_minimal
   libgoogle-perftools-dev
-  # DXF and PNG writers (export/)
-  libdxflib-dev libpng-dev
+  # DXF, PNG and PDF writers (export/)
+  libdxflib-dev libpng-dev libcairo2-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   # SVG read back in export/tests
   libexpat1-dev
-  # output checkers (tests/tools/check_drawing.py: DXF audit, SVG rendering)
-  python3-ezdxf librsvg2-bin
+  # output checkers (tests/tools/check_drawing.py: DXF audit, SVG rendering, PDF read back)
+  python3-ezdxf librsvg2-bin poppler-utils
   # the speed-versus-accuracy chart (bench/chart)
   python3-matplotlib
   # peer in the clipper benchmark (Clipper 1, integer coordinates)

@@ -1,15 +1,14 @@
-// `hlr draw MESH... --view V -o OUT.svg|OUT.dxf|OUT.json|OUT.png [--hidden dashed|none] [--crease DEG]
-//            [--sheet A4] [--scale 1:2] [--merge-distance MM] [--contact-angle DEG]
-//            [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
+// `hlr draw MESH... --view V -o OUT.svg|OUT.pdf|OUT.dxf|OUT.json|OUT.png [--crease DEG] [sheet
+//            options: style_options.hpp] [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
 #include "line_runs.hpp"
+#include "style_options.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/export/check.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -20,42 +19,21 @@ namespace {
 struct DrawOptions {
   SceneOptions scene;
   std::vector<std::string> outputs;
-  std::string hidden = "dashed";
   LineRunSettings lines;
-  std::string sheet = "A4";
-  std::string scale;
+  StyleOptions style;
   int raster = 0;  // pixels; 0: the exact path (or --kernel)
   std::string dash = "arc";
-  double merge_distance = 0.01;  // mm on the sheet
-  double contact_degrees = 10;
 };
 
-enum class Format { json, svg, dxf, png };
+enum class Format { json, svg, pdf, dxf, png };
 
 Format format_of(const std::string& path) {
   if (has_extension(path, ".json")) return Format::json;
   if (has_extension(path, ".svg")) return Format::svg;
+  if (has_extension(path, ".pdf")) return Format::pdf;
   if (has_extension(path, ".dxf")) return Format::dxf;
   if (has_extension(path, ".png")) return Format::png;
-  throw UserError(path, "unknown output format (the name must end in .svg, .dxf, .json or .png)");
-}
-
-// "1:2" (drawing : model), "2:1", or a plain factor "0.5".
-std::optional<double> parse_scale(const std::string& text) {
-  auto number = [](std::string_view s) -> std::optional<double> {
-    double v = 0;
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || end != s.data() + s.size() || !(v > 0) || !std::isfinite(v)) return std::nullopt;
-    return v;
-  };
-  const auto colon = text.find(':');
-  if (colon == std::string::npos) return number(text);
-  const auto drawing = number(std::string_view(text).substr(0, colon));
-  const auto model = number(std::string_view(text).substr(colon + 1));
-  if (!drawing || !model) return std::nullopt;
-  const double scale = *drawing / *model;
-  if (!(scale > 0) || !std::isfinite(scale)) return std::nullopt;
-  return scale;
+  throw UserError(path, "unknown output format (the name must end in .svg, .pdf, .dxf, .json or .png)");
 }
 
 int solve(const DrawOptions& options, const View& view, const exporter::DrawingStyle& style) {
@@ -96,14 +74,21 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   // flushing of every file to disk, come after it and are in the summary's total only.
   const auto write_start = std::chrono::steady_clock::now();
   auto write_seconds = [&] { return drawing.times.write + seconds_since(write_start); };
-  // What the SVG and DXF draw, worked out once for both, and what they merge, for the JSON's stats
-  // and the summary (without an SVG or DXF, the merge alone).
+  // What the SVG, PDF and DXF draw, worked out once for all, and what they merge and recover, for
+  // the JSON's stats and the summary (without a sheet, the merge alone).
   const bool on_sheet = std::any_of(formats.begin(), formats.end(), [](Format f) {
-    return f == Format::svg || f == Format::dxf;
+    return f == Format::svg || f == Format::pdf || f == Format::dxf;
   });
   exporter::SheetLines sheet;
-  if (on_sheet) sheet = exporter::sheet_lines(drawing, style);
-  else sheet.merged = exporter::sheet_segments(drawing, style);
+  if (on_sheet) {
+    sheet = exporter::sheet_lines(drawing, style);
+    if (style.scale)
+      if (const auto overflow = exporter::sheet_overflow(sheet, style))
+        throw UsageError("--scale " + options.style.scale + ": " + *overflow);
+    drawing.curves = exporter::LineDrawing::CurveCounts{sheet.curves.circles.size(), sheet.curves.arcs};
+  } else {
+    sheet.merged = exporter::sheet_segments(drawing, style);
+  }
   const std::size_t merged = sheet.merged.merged;
   drawing.merged_segments = merged;
   drawing.merge_distance_mm = style.merge_distance;
@@ -120,6 +105,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
           exporter::write_lines_json(drawing, [&](std::string_view text) { files[i]->write(text); }, write_seconds);
           break;
         case Format::svg: files[i]->write(exporter::lines_svg(drawing, style, sheet)); break;
+        case Format::pdf: files[i]->write(exporter::lines_pdf(drawing, style, sheet)); break;
         case Format::dxf: files[i]->write(exporter::lines_dxf(drawing, style, sheet)); break;
         case Format::png:
           files[i]->write(exporter::png_document(raster.raster->pbuffer(
@@ -146,11 +132,14 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
             << "  " << st.visible_pieces << " visible and " << st.hidden_pieces << " hidden pieces in "
             << drawing.times.total << " s\n";
   if (merged > 0)
-    std::cout << "  " << merged << " segments merged in the SVG and DXF (lines within " << style.merge_distance
+    std::cout << "  " << merged << " segments merged on the sheet (lines within " << style.merge_distance
               << " mm of a line drawn already)\n";
   if (sheet.merged.contact > 0)
-    std::cout << "  " << sheet.merged.contact << " intersection segments left out of the SVG and DXF (surfaces meeting at under "
+    std::cout << "  " << sheet.merged.contact << " intersection segments left off the sheet (surfaces meeting at under "
               << style.contact_degrees << " degrees: contact of nearly tangent surfaces)\n";
+  if (!sheet.curves.circles.empty() || sheet.curves.arcs > 0)
+    std::cout << "  " << sheet.curves.circles.size() << " circles and " << sheet.curves.arcs
+              << " arcs drawn as such (vertices within " << style.merge_distance << " mm of a circle on the sheet)\n";
   std::cout << "  outputs written in " << written << " s (" << drawing.times.total + written << " s in all)\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
   return kExitOk;
@@ -160,31 +149,15 @@ int run(const DrawOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
   const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
-  exporter::DrawingStyle style;
-  if (const auto sheet = exporter::sheet_by_name(options.sheet)) {
-    style.sheet = *sheet;
-  } else {
-    std::cerr << "hlr: --sheet: unknown sheet \"" << options.sheet << "\" (use A0, A1, A2, A3 or A4)" << std::endl;
-    return kExitUsage;
-  }
-  if (!options.scale.empty()) {
-    style.scale = parse_scale(options.scale);
-    if (!style.scale) {
-      std::cerr << "hlr: --scale: \"" << options.scale << "\" is not a scale (write 1:2, 5:1 or a factor such as 0.5)"
-                << std::endl;
-      return kExitUsage;
-    }
-  }
-  style.hidden = options.hidden == "dashed";
-  style.merge_distance = options.merge_distance;
-  style.contact_degrees = options.contact_degrees;
+  const std::optional<exporter::DrawingStyle> style = resolve_style(options.style);
+  if (!style) return kExitUsage;
   if (options.raster > 0 && options.scene.kernel != "exact") {
     std::cerr << "hlr: --raster and --kernel " << options.scene.kernel
               << " exclude each other (the raster path decides visibility by depth tests, not by a kernel)"
               << std::endl;
     return kExitUsage;
   }
-  return solve(options, *view, style);
+  return solve(options, *view, *style);
 }
 
 }  // namespace
@@ -195,33 +168,12 @@ Subcommand add_draw_command(CLI::App& parent) {
       "draw", "Draw a mesh as an engineering line drawing: visible lines solid, hidden lines dashed, exactly.");
   add_scene_options(*cmd, options->scene);
   cmd->add_option("-o,--output", options->outputs,
-                  "file to write, by extension: .svg (a sheet, in mm), .dxf (R2000, model units), .json "
+                  "file to write, by extension: .svg or .pdf (a sheet, in mm), .dxf (R2000, model units), .json "
                   "(hlr-lines/1) or .png (with --raster); may be given several times")
       ->required()
       ->type_name("OUT");
-  cmd->add_option("--hidden", options->hidden, "hidden lines in SVG and DXF: dashed or none (JSON keeps them)")
-      ->check(CLI::IsMember({"dashed", "none"}))
-      ->capture_default_str()
-      ->type_name("STYLE");
   add_line_options(*cmd, options->lines);
-  cmd->add_option("--sheet", options->sheet, "sheet for the SVG, landscape: A0, A1, A2, A3 or A4")
-      ->capture_default_str()
-      ->type_name("SIZE");
-  cmd->add_option("--scale", options->scale,
-                  "drawing scale such as 1:2 or 5:1 (default: the largest ISO 5455 scale that fits the sheet)")
-      ->type_name("SCALE");
-  cmd->add_option("--merge-distance", options->merge_distance,
-                  "in SVG and DXF, draw lines closer than MM on the sheet once, visible over hidden (0: "
-                  "merge nothing; the JSON keeps every piece)")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str()
-      ->type_name("MM");
-  cmd->add_option("--contact-angle", options->contact_degrees,
-                  "in SVG and DXF, leave out intersection lines where surfaces meet at less than DEG degrees (the "
-                  "contact of nearly tangent surfaces, such as a shaft in a bore; 0: draw all; the JSON keeps them)")
-      ->check(CLI::Range(0.0, 90.0))
-      ->capture_default_str()
-      ->type_name("DEG");
+  add_style_options(*cmd, options->style);
   cmd->add_option("--raster", options->raster,
                   "decide visibility in image space instead (the P-buffer path, inexact): a Z-buffer N pixels "
                   "along the longer side; needed for .png output")
@@ -239,7 +191,8 @@ Subcommand add_draw_command(CLI::App& parent) {
       "  hlr draw fixtures/parts/anchor.off --view iso --raster 2048 -o out/anchor.png\n"
       "\n"
       "Feature lines are boundary, crease, silhouette, group and intersection lines; each is split into\n"
-      "visible and hidden pieces exactly. Model units are taken as millimetres. Formats: docs/FORMATS.md.");
+      "visible and hidden pieces exactly. Model units are millimetres unless --units says otherwise.\n"
+      "Formats: docs/FORMATS.md.");
   return {cmd, [options] { return run(*options); }};
 }
 

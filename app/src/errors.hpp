@@ -12,6 +12,12 @@ struct UserError : std::runtime_error {
   UserError(const std::string& file, const std::string& problem) : std::runtime_error(file + ": " + problem) {}
 };
 
+// A command line that cannot be carried out, found only once the work has begun (a --scale at
+// which the drawing does not fit its sheet). what() is "OPTION VALUE: problem"; exit 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Exit codes of the hlr program.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitInputError = 1;  // bad input or unwritable output: a UserError

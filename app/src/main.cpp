@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
 
   std::vector<Subcommand> commands;
   commands.push_back(add_draw_command(app));
+  commands.push_back(add_sheet_command(app));
   commands.push_back(add_check_command(app));
   commands.push_back(add_surfaces_command(app));
   commands.push_back(add_clip_command(app));
@@ -66,6 +67,7 @@ int main(int argc, char** argv) {
   app.footer(
       "Examples:\n"
       "  hlr draw fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg -o out/bracket.dxf\n"
+      "  hlr sheet fixtures/parts/flange.off --views front,top,right,iso -o out/flange.pdf\n"
       "  hlr surfaces fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg\n"
       "  hlr clip fixtures/clip/subject.json fixtures/clip/clip.json -o out/clip-result.json\n"
       "\n"
@@ -110,6 +112,9 @@ int main(int argc, char** argv) {
       const int status = command.run();
       print_predicate_stats();
       return status;
+    } catch (const UsageError& e) {
+      std::cerr << "hlr: " << one_line(e.what()) << std::endl;
+      return kExitUsage;
     } catch (const UserError& e) {
       return report(e.what());
     } catch (const hlr::ImportError& e) {

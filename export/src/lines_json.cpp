@@ -133,6 +133,10 @@ json stats_json(const LineDrawing& drawing, double write) {
     stats["contact_segments"] = drawing.contact_segments;
     stats["contact_degrees"] = drawing.contact_degrees;
   }
+  if (drawing.curves) {
+    stats["circles"] = drawing.curves->circles;
+    stats["arcs"] = drawing.curves->arcs;
+  }
   return stats;
 }
 

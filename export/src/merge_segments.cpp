@@ -242,36 +242,6 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
   return out;
 }
 
-namespace {
-
-MergedSegments sheet_segments_at(const LineDrawing& drawing, const DrawingStyle& style, double scale) {
-  std::vector<DrawingSegment> drawn;
-  drawn.reserve(drawing.segments.size());
-  std::size_t contact = 0;
-  for (const auto& s : drawing.segments) {
-    if (!s.visible && !style.hidden) continue;
-    if (s.meeting_degrees < style.contact_degrees) ++contact;
-    else drawn.push_back(s);
-  }
-  MergedSegments out = merge_segments(drawn, style.merge_distance / scale);
-  out.contact = contact;
-  return out;
-}
-
-}  // namespace
-
-MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style) {
-  return sheet_segments_at(drawing, style, drawing_scale(drawing, style));
-}
-
-SheetLines sheet_lines(const LineDrawing& drawing, const DrawingStyle& style) {
-  SheetLines sheet;
-  sheet.scale = drawing_scale(drawing, style);
-  sheet.merged = sheet_segments_at(drawing, style, sheet.scale);
-  sheet.chains = chain_segments(sheet.merged.segments);
-  return sheet;
-}
-
 std::vector<std::string> part_names(const LineDrawing& drawing) {
   std::uint32_t parts = std::uint32_t(drawing.input.files.size());
   for (const auto& s : drawing.segments) parts = std::max(parts, s.mesh + 1);

@@ -447,6 +447,10 @@ std::string lines_json_as_one_tree(const LineDrawing& drawing) {
     out["stats"]["contact_segments"] = drawing.contact_segments;
     out["stats"]["contact_degrees"] = drawing.contact_degrees;
   }
+  if (drawing.curves) {
+    out["stats"]["circles"] = drawing.curves->circles;
+    out["stats"]["arcs"] = drawing.curves->arcs;
+  }
   return out.dump(1) + "\n";
 }
 
@@ -507,6 +511,7 @@ TEST(LinesJson, BytesAsOneTreeDumpsThem) {
       d.merge_distance_mm = 0.01;
       d.contact_segments = 2;
       d.contact_degrees = 10;
+      d.curves = LineDrawing::CurveCounts{3, 5};
     }
     if (seed == 3) {
       d.raster = RasterInfo{512, 512, 300, 0.125};
@@ -877,9 +882,9 @@ TEST(SheetLines, OnceForBothWriters) {
   for (std::size_t c = 0; c < chains.size(); ++c) EXPECT_EQ(sheet.chains[c].points, chains[c].points);
   EXPECT_EQ(lines_svg(d, a4(), sheet), lines_svg(d, a4()));
   EXPECT_EQ(lines_dxf(d, a4(), sheet), lines_dxf(d, a4()));
-  // The writers draw what they are given: a sheet without chains has no lines.
+  // The writers draw what they are given: a sheet without curves has no lines.
   SheetLines none = sheet;
-  none.chains.clear();
+  none.curves = {};
   EXPECT_TRUE(parse_svg(lines_svg(d, a4(), none)).in_group("path", "visible").empty());
   EXPECT_EQ(read_dxf(lines_dxf(d, a4(), none)).polylines.size(), 0u);
 }
@@ -1005,6 +1010,7 @@ int write_samples(const std::filesystem::path& dir) {
   visible_only.hidden = false;
   const LineDrawing bracket = sample_bracket();
   write("bracket.svg", lines_svg(bracket, a4_style));
+  write("bracket.pdf", lines_pdf(bracket, a4_style));
   write("bracket.dxf", lines_dxf(bracket, a4_style));
   write("bracket.json", lines_json(bracket));
   write("bracket_visible_only.svg", lines_svg(bracket, visible_only));

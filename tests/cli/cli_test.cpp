@@ -632,6 +632,7 @@ TEST_F(CliClip, FailedRunKeepsTheOldOutput) {
 namespace {
 
 const fs::path kScenes = HLR_SCENE_FIXTURES;
+const fs::path kBundledParts = HLR_PART_FIXTURES;
 
 class CliSurfaces : public CliClip {};
 
@@ -953,7 +954,7 @@ TEST_F(CliDraw, NearlyCoincidentEdgesOfTwoPartsAreDrawnOnceInTheirPartGroups) {
   const std::string front = (kParts / "front_box.off").string(), back = (kParts / "back_box.off").string();
   Outcome run = hlr({"draw", front, back, "--view", "front", "-o", out("p.svg").string(), "-o", out("p.json").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.out.find("2 segments merged in the SVG and DXF"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("2 segments merged on the sheet"), std::string::npos) << run.out;
 
   // The JSON: the cube's left edge visible at x = 0, the box's hidden at x = 1e-7, both there.
   const json doc = json::parse(slurp(out("p.json")));
@@ -1013,7 +1014,7 @@ TEST_F(CliDraw, ContactLinesOfNearlyTangentSurfacesAreLeftOffTheSheet) {
   const std::string bore = write_input("bore.off", cylinder_off(72, 10, 0, 20)).string();
   Outcome run = hlr({"draw", shaft, bore, "--view", "front", "-o", out("s.svg").string(), "-o", out("s.json").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.out.find("intersection segments left out of the SVG and DXF"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("intersection segments left off the sheet"), std::string::npos) << run.out;
   const json doc = json::parse(slurp(out("s.json")));
   EXPECT_GT(doc.at("stats").at("lines_by_kind").at("intersection").get<int>(), 50);
   EXPECT_GT(doc.at("stats").at("contact_segments").get<int>(), 50);
@@ -1055,15 +1056,94 @@ TEST_F(CliDraw, BadMergeDistanceIsAUsageError) {
 TEST_F(CliDraw, UnknownSubcommandIsNamed) {
   Outcome run = hlr({"drwa", (kScenes / "cube.off").string(), "-o", out("c.svg").string()});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, check, surfaces or clip; see 'hlr --help')\n");
+  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, sheet, check, surfaces or clip; see 'hlr --help')\n");
   EXPECT_TRUE(entries(dir_ / "out").empty());
   run = hlr({});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(run.err, "hlr: a subcommand is required (draw, check, surfaces or clip; see 'hlr --help')\n");
+  EXPECT_EQ(run.err, "hlr: a subcommand is required (draw, sheet, check, surfaces or clip; see 'hlr --help')\n");
   // Options before the subcommand still work; --help and --version too.
   EXPECT_EQ(hlr({"--version"}).exit_code, 0);
   EXPECT_EQ(hlr({"--help"}).exit_code, 0);
   EXPECT_EQ(hlr({"draw", "--help"}).exit_code, 0);
+}
+
+TEST_F(CliDraw, PdfSheetAndAScaleThatDoesNotFit) {
+  const std::string mesh = (kBundledParts / "flange.off").string();
+  Outcome run = hlr({"draw", mesh, "--view", "top", "--line-group", "0.7", "--units", "cm", "-o", out("f.pdf").string(),
+                     "-o", out("f.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(slurp(out("f.pdf")).rfind("%PDF-", 0), 0u);
+  EXPECT_NE(run.out.find("6 circles and 0 arcs drawn as such"), std::string::npos) << run.out;
+  const json doc = json::parse(slurp(out("f.json")));
+  EXPECT_EQ(doc.at("stats").at("circles"), 6);
+  EXPECT_EQ(doc.at("stats").at("arcs"), 0);
+  fs::remove(out("f.pdf")), fs::remove(out("f.json"));
+  // 120 cm is 1.2 m: 1:5 on A4 (240 mm).
+  run = hlr({"draw", mesh, "--view", "top", "--units", "cm", "-o", out("f.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(slurp(out("f.svg")).find("<title>hlr drawing, A4, 1:5</title>"), std::string::npos);
+  fs::remove(out("f.svg"));
+  // A given scale at which the drawing runs off the sheet: exit 2, one line, no file.
+  expect_failure({mesh, "--view", "top", "--scale", "5:1", "-o", out("f.svg").string()}, 2,
+                 "hlr: --scale 5:1: the drawing needs 600 x 400 mm at 5:1; the drawing area of A4 is 257 x 160 mm");
+  // With only JSON there is no sheet to overflow.
+  EXPECT_EQ(hlr({"draw", mesh, "--view", "top", "--scale", "5:1", "-o", out("f.json").string()}).exit_code, 0);
+  fs::remove(out("f.json"));
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--line-group", "0.6"}, {"--units", "ft"}})
+    expect_failure({mesh, bad[0], bad[1], "-o", out("f.svg").string()}, 2, "hlr: ");
+}
+
+class CliSheet : public CliDraw {
+ protected:
+  void expect_sheet_failure(const std::vector<std::string>& args, int code, const std::string& prefix) const {
+    std::vector<std::string> all{"sheet", (kBundledParts / "flange.off").string()};
+    all.insert(all.end(), args.begin(), args.end());
+    Outcome run = hlr(all);
+    SCOPED_TRACE(::testing::PrintToString(args));
+    EXPECT_EQ(run.exit_code, code) << run.err;
+    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+    EXPECT_EQ(run.err.rfind(prefix, 0), 0u) << run.err;
+    EXPECT_TRUE(entries(dir_ / "out").empty()) << run.err;
+  }
+};
+
+TEST_F(CliSheet, WritesEveryFormatAndSummarisesTheViews) {
+  Outcome run = hlr({"sheet", (kBundledParts / "flange.off").string(), "--views", "front,top", "--dir", "1,2,-3", "--projection",
+                     "first", "--sheet", "a2", "--title", "Flange <1> & co", "-o", out("s.svg").string(), "-o",
+                     out("s.pdf").string(), "-o", out("s.dxf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  EXPECT_NE(run.out.find("3 views, first angle, A2 at "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("  top: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("  custom: "), std::string::npos) << run.out;
+  const auto doc = hlr::test::parse_svg(slurp(out("s.svg")));
+  ASSERT_TRUE(doc.well_formed) << doc.error;
+  for (const char* id : {"view-front", "view-top", "view-custom", "projection-symbol", "title-block"})
+    EXPECT_TRUE(doc.find("g", id)) << id;
+  bool title = false;
+  for (const auto* t : doc.in_group("text", "title-text")) title |= t->text == "Flange <1> & co";
+  EXPECT_TRUE(title);
+  EXPECT_EQ(slurp(out("s.pdf")).rfind("%PDF-", 0), 0u);
+  EXPECT_NE(slurp(out("s.dxf")).find("VIEW_CUSTOM"), std::string::npos);
+  EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"s.dxf", "s.pdf", "s.svg"}));
+}
+
+TEST_F(CliSheet, MistakesAreOneLineAndNoFile) {
+  const std::string o = out("s.svg").string();
+  expect_sheet_failure({"--views", "front,sideways", "-o", o}, 2, "hlr: --views: unknown view \"sideways\"");
+  expect_sheet_failure({"--views", "front,top,front", "-o", o}, 2, "hlr: --views: view \"front\" is listed twice");
+  expect_sheet_failure({"--projection", "second", "-o", o}, 2, "hlr: ");
+  expect_sheet_failure({"--sheet", "B9", "-o", o}, 2, "hlr: --sheet: unknown sheet");
+  expect_sheet_failure({"--dir", "0,0,0", "-o", o}, 2, "hlr: --dir/--up: ");
+  expect_sheet_failure({"--scale", "20:1", "-o", o}, 2, "hlr: --scale 20:1: the views need ");
+  expect_sheet_failure({"-o", out("s.json").string()}, 1, "hlr: " + out("s.json").string() + ": unknown output format");
+  expect_sheet_failure({"-o", o, "-o", (dir_ / "missing" / "s.pdf").string()}, 1, "hlr: " + (dir_ / "missing" / "s.pdf").string());
+}
+
+TEST_F(CliSheet, HelpShowsAnExample) {
+  Outcome run = hlr({"sheet", "--help"});
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.out.find("hlr sheet fixtures/parts/flange.off"), std::string::npos) << run.out;
 }
 
 class CliCheck : public CliDraw {};

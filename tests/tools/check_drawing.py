@@ -1,19 +1,27 @@
 #!/usr/bin/python3
-"""Checks hlr drawings with tools outside the project: check_drawing.py [--parts A,B,...] FILE...
+"""Checks hlr drawings with tools outside the project: check_drawing.py [--parts A,B,...] [--render DIR] FILE...
 
   .dxf   read by ezdxf (recover.readfile, then a strict readfile) and audited: any audit error fails
-         (ezdxf's own repairs, "fixes", are listed but pass); layers VISIBLE and HIDDEN must exist
-         (or, for a scene of several meshes, NAME-VISIBLE and NAME-HIDDEN for each part and no
-         VISIBLE/HIDDEN), every hidden layer's linetype a dashed pattern defined in the file, and
-         every entity on one of those layers.
-  .svg   parsed with xml.etree (root <svg>, size in mm, every path of the visible and hidden groups
-         inside a part group <g id="part-NAME-visible|hidden" class="part-NAME">, ids unique) and
-         rendered with rsvg-convert to a temporary PNG: a non-zero exit or an empty PNG fails.
+         (ezdxf's own repairs, "fixes", are listed but pass). A drawing of hlr draw has layers
+         VISIBLE and HIDDEN (or, for a scene of several meshes, NAME-VISIBLE and NAME-HIDDEN for
+         each part and no VISIBLE/HIDDEN) and CENTER, every hidden layer's linetype a dashed pattern
+         defined in the file, CENTER's a long-dash dotted one, and every entity on one of those
+         layers. A sheet of hlr sheet (blocks VIEW_*) has layers VISIBLE, HIDDEN, CENTER and BORDER,
+         in model space only BORDER entities and inserts of the view blocks, and in the blocks only
+         VISIBLE, HIDDEN and CENTER entities.
+  .svg   parsed with xml.etree (root <svg>, size in mm, every path and circle of the visible and
+         hidden groups inside a part group <g id="part-NAME-visible|hidden" class="part-NAME">, or in
+         a sheet inside a view group <g id="view-NAME">, ids unique) and rendered with rsvg-convert
+         to a temporary PNG: a non-zero exit or an empty PNG fails.
+  .pdf   read by poppler's pdfinfo (one page, the size of an ISO A sheet, landscape) and rendered
+         by pdftoppm to a PNG that must not be blank.
   .json  the keys and types of hlr-lines/1 (DESIGN.md "The JSON contract").
 
 --parts A,B,...  the drawings are of a scene of these parts (names as docs/FORMATS.md makes them
                  from the mesh files): the DXF must have exactly their layer pairs (upper case), the
                  SVG's part groups must name only them and name each at least once.
+--render DIR     keep the renders: FILE's SVG and PDF as DIR/NAME.svg.png and DIR/NAME.pdf.png, and
+                 DXFs drawn by ezdxf's drawing add-on with matplotlib as DIR/NAME.dxf.png.
 
 One line per file, "ok" or "FAIL" first; exit status 0 only when every file passes.
 Run it with Debian's interpreter, /usr/bin/python3: python3-ezdxf belongs to it.
@@ -54,13 +62,16 @@ def check_dxf(path):
         ezdxf.readfile(path)  # the strict reader must take it too
     except Exception as e:
         raise CheckFailed(f"ezdxf.readfile fails: {e}")
+    blocks = [b.name for b in doc.blocks if b.name.upper().startswith("VIEW_")]
+    if blocks:
+        return check_dxf_sheet(path, doc, blocks, auditor, audit)
     if PARTS:
         pairs = [(f"{p.upper()}-VISIBLE", f"{p.upper()}-HIDDEN") for p in PARTS]
         for name in ("VISIBLE", "HIDDEN"):
             require(not doc.layers.has_entry(name), f"layer {name} in a drawing of several parts")
     else:
         pairs = [("VISIBLE", "HIDDEN")]
-    wanted = {name for pair in pairs for name in pair}
+    wanted = {name for pair in pairs for name in pair} | {"CENTER"}
     for name in sorted(wanted):
         require(doc.layers.has_entry(name), f"layer {name} missing")
     # ezdxf adds "Defpoints" as it loads a file
@@ -68,20 +79,89 @@ def check_dxf(path):
     require(not extra, f"unexpected layers {sorted(extra)}")
     pattern = None
     for _, hidden in pairs:
-        ltype = doc.layers.get(hidden).dxf.linetype
-        require(doc.linetypes.has_entry(ltype), f"linetype {ltype} of layer {hidden} is not defined in the file")
-        pattern = doc.linetypes.get(ltype).simplified_line_pattern()
-        require(len(pattern) >= 2 and any(x > 0 for x in pattern[1::2]),
-                f"linetype {ltype} of layer {hidden} is not dashed (pattern {pattern})")
+        pattern = dashed_pattern(doc, hidden)
+    centre = centre_pattern(doc)
     msp = doc.modelspace()
     counts = {layer: len(msp.query(f'*[layer=="{layer}"]')) for layer in sorted(wanted)}
     require(sum(counts.values()) == len(msp), "entities on layers other than the drawing's")
     fixes = len(auditor.fixes) + len(audit.fixes)
+    curves = f"{len(msp.query('CIRCLE'))} circles, {len(msp.query('ARC'))} arcs"
     if PARTS:
         per_layer = ", ".join(f"{layer} {n}" for layer, n in counts.items())
-        return f"entities: {per_layer}; hidden dashed {pattern}, ezdxf audit: 0 errors, {fixes} fixes"
-    return (f"{counts['VISIBLE']} visible, {counts['HIDDEN']} hidden entities, HIDDEN dashed {pattern}, "
-            f"$LTSCALE {doc.header.get('$LTSCALE', 1)}, ezdxf audit: 0 errors, {fixes} fixes")
+        return f"entities: {per_layer}; {curves}; hidden dashed {pattern}, ezdxf audit: 0 errors, {fixes} fixes"
+    return (f"{counts['VISIBLE']} visible, {counts['HIDDEN']} hidden, {counts['CENTER']} centre entities, {curves}, "
+            f"HIDDEN dashed {pattern}, CENTER {centre}, $LTSCALE {doc.header.get('$LTSCALE', 1)}, "
+            f"ezdxf audit: 0 errors, {fixes} fixes")
+
+
+def dashed_pattern(doc, layer):
+    ltype = doc.layers.get(layer).dxf.linetype
+    require(doc.linetypes.has_entry(ltype), f"linetype {ltype} of layer {layer} is not defined in the file")
+    pattern = doc.linetypes.get(ltype).simplified_line_pattern()
+    require(len(pattern) >= 2 and any(x > 0 for x in pattern[1::2]),
+            f"linetype {ltype} of layer {layer} is not dashed (pattern {pattern})")
+    return pattern
+
+
+def centre_pattern(doc):
+    """CENTER's linetype: a long dash, a gap, a dot (a dash of at most a tenth of the long one), a gap."""
+    pattern = dashed_pattern(doc, "CENTER")
+    require(len(pattern) == 4 and pattern[2] <= pattern[0] / 10, f"CENTER is not long-dash dotted (pattern {pattern})")
+    return pattern
+
+
+def check_dxf_sheet(path, doc, blocks, auditor, audit):
+    wanted = {"VISIBLE", "HIDDEN", "CENTER", "BORDER"}
+    for name in sorted(wanted):
+        require(doc.layers.has_entry(name), f"layer {name} missing")
+    extra = {layer.dxf.name for layer in doc.layers if layer.dxf.name.lower() != "defpoints"} - wanted - {"0"}
+    require(not extra, f"unexpected layers {sorted(extra)}")
+    dashed_pattern(doc, "HIDDEN")
+    centre_pattern(doc)
+    msp = doc.modelspace()
+    inserts = msp.query("INSERT")
+    require(sorted(i.dxf.name for i in inserts) == sorted(blocks), "the view blocks are not each inserted once")
+    require(all(e.dxf.layer == "BORDER" for e in msp if e.dxftype() != "INSERT"),
+            "model space entities other than the view inserts off layer BORDER")
+    circles = arcs = 0
+    for name in blocks:
+        block = doc.blocks.get(name)
+        layers = {e.dxf.layer for e in block}
+        require(layers <= {"VISIBLE", "HIDDEN", "CENTER"}, f"block {name} has entities on {sorted(layers)}")
+        circles += len(block.query("CIRCLE"))
+        arcs += len(block.query("ARC"))
+    fixes = len(auditor.fixes) + len(audit.fixes)
+    border = len(msp) - len(inserts)
+    return (f"sheet of {len(blocks)} view blocks ({', '.join(blocks)}), {circles} circles, {arcs} arcs, "
+            f"{border} border entities, ezdxf audit: 0 errors, {fixes} fixes")
+
+
+def render_dxf(path):
+    """The DXF drawn by ezdxf's drawing add-on with matplotlib, into RENDER (if set)."""
+    if not RENDER:
+        return ""
+    try:
+        import logging
+        import matplotlib
+        matplotlib.use("Agg")
+        # dxflib's text style names the font file "txt" (AutoCAD's txt.shx): matplotlib has none of
+        # that name and says so for every text, then uses its default font.
+        logging.getLogger("matplotlib.font_manager").setLevel(logging.ERROR)
+        import matplotlib.pyplot as plt
+        from ezdxf.addons.drawing import Frontend, RenderContext
+        from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
+        import ezdxf
+    except ImportError as e:
+        raise CheckFailed(f"cannot render the DXF: {e}")
+    doc = ezdxf.readfile(path)
+    fig = plt.figure()
+    ax = fig.add_axes([0, 0, 1, 1])
+    Frontend(RenderContext(doc), MatplotlibBackend(ax)).draw_layout(doc.modelspace(), finalize=True)
+    out = os.path.join(RENDER, os.path.basename(path) + ".png")
+    fig.savefig(out, dpi=150)
+    plt.close(fig)
+    require(os.path.getsize(out) > 0, "the DXF rendered to an empty PNG")
+    return f", drawn to {out}"
 
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -102,8 +182,8 @@ def check_svg_parts(root):
             require(gid.startswith("part-") and gid.endswith("-" + cls), f"group {gid!r} in {cls} is not a part group")
             name = gid[len("part-"):-len(cls) - 1]
             require(klass == "part-" + name, f"group {gid} has class {klass!r}, not part-{name}")
-            paths = [e for e in child if e.tag == SVG + "path"]
-            require(paths and len(paths) == len(child), f"group {gid} is empty or holds more than paths")
+            paths = [e for e in child if e.tag in (SVG + "path", SVG + "circle")]
+            require(paths and len(paths) == len(child), f"group {gid} is empty or holds more than paths and circles")
             parts.setdefault(name, [0, 0])[0 if cls == "visible" else 1] += len(paths)
     if PARTS:
         require(set(parts) <= set(PARTS), f"part groups {sorted(set(parts) - set(PARTS))} are not parts of the scene")
@@ -130,11 +210,52 @@ def check_svg(path):
         with open(png, "rb") as f:
             require(f.read(8) == b"\x89PNG\r\n\x1a\n", "rsvg-convert output is not a PNG")
         size = os.path.getsize(png)
-    paths = sum(1 for e in root.iter("{http://www.w3.org/2000/svg}path"))
+        kept = ""
+        if RENDER:
+            kept = f", kept as {os.path.join(RENDER, os.path.basename(path) + '.png')}"
+            shutil.copyfile(png, os.path.join(RENDER, os.path.basename(path) + ".png"))
+    paths = sum(1 for e in root.iter(SVG + "path"))
+    circles = sum(1 for e in root.iter(SVG + "circle"))
+    views = [g.get("id") for g in root.iter(SVG + "g") if (g.get("id") or "").startswith("view-") and g.get("class") == "view"]
+    if views:
+        for g in root.iter(SVG + "g"):
+            if g.get("class") == "view":
+                lines = [e for e in g.iter() if e.tag in (SVG + "path", SVG + "circle")]
+                require(lines, f"view group {g.get('id')} is empty")
+        return (f"{root.get('width')} x {root.get('height')}, sheet of {', '.join(views)}, {paths} paths, "
+                f"{circles} circles, rendered ({size} bytes PNG){kept}")
     parts = check_svg_parts(root)
     summary = ", ".join(f"{name} {v}+{h}" for name, (v, h) in parts.items())
-    return (f"{root.get('width')} x {root.get('height')}, {paths} paths, parts (visible+hidden paths): "
-            f"{summary or 'none'}, rendered ({size} bytes PNG)")
+    return (f"{root.get('width')} x {root.get('height')}, {paths} paths, {circles} circles, parts (visible+hidden "
+            f"paths): {summary or 'none'}, rendered ({size} bytes PNG){kept}")
+
+
+ISO_A = {"A0": (1189, 841), "A1": (841, 594), "A2": (594, 420), "A3": (420, 297), "A4": (297, 210)}
+
+
+def check_pdf(path):
+    info = shutil.which("pdfinfo")
+    render = shutil.which("pdftoppm")
+    require(info is not None and render is not None, "pdfinfo or pdftoppm is missing (apt-get install poppler-utils)")
+    run = subprocess.run([info, path], capture_output=True, text=True)
+    require(run.returncode == 0, f"pdfinfo exits {run.returncode}: {run.stderr.strip()}")
+    fields = dict(line.split(":", 1) for line in run.stdout.splitlines() if ":" in line)
+    require(fields.get("Pages", "").strip() == "1", f"{fields.get('Pages', '?').strip()} pages, not 1")
+    size = fields.get("Page size", "").split()
+    require(len(size) >= 3, f"no page size: {fields.get('Page size')}")
+    w_mm, h_mm = float(size[0]) * 25.4 / 72, float(size[2]) * 25.4 / 72
+    sheet = [name for name, (w, h) in ISO_A.items() if abs(w - w_mm) < 0.5 and abs(h - h_mm) < 0.5]
+    require(sheet, f"page {w_mm:.1f} x {h_mm:.1f} mm is not a landscape ISO A sheet")
+    with tempfile.TemporaryDirectory() as tmp:
+        stem = os.path.join(RENDER or tmp, os.path.basename(path))
+        run = subprocess.run([render, "-r", "50", "-png", "-singlefile", path, stem], capture_output=True, text=True)
+        require(run.returncode == 0, f"pdftoppm exits {run.returncode}: {run.stderr.strip()}")
+        png = stem + ".png"
+        require(os.path.exists(png) and os.path.getsize(png) > 0, "pdftoppm wrote no PNG")
+        with open(png, "rb") as f:
+            data = f.read()
+        require(data[:8] == b"\x89PNG\r\n\x1a\n", "pdftoppm output is not a PNG")
+    return f"{sheet[0]} ({w_mm:.1f} x {h_mm:.1f} mm), 1 page, rendered ({len(data)} bytes PNG)"
 
 
 def is_number(x):
@@ -199,14 +320,23 @@ def check_json(path):
     return f"{len(lines)} lines ({visible} visible, {len(lines) - visible} hidden)"
 
 
-CHECKS = {".dxf": check_dxf, ".svg": check_svg, ".json": check_json}
+def check_dxf_and_render(path):
+    return check_dxf(path) + render_dxf(path)
+
+
+CHECKS = {".dxf": check_dxf_and_render, ".svg": check_svg, ".json": check_json, ".pdf": check_pdf}
 PARTS = []  # --parts
+RENDER = None  # --render DIR
 
 
 def main(argv):
-    global PARTS
-    if len(argv) >= 3 and argv[1] == "--parts":
-        PARTS = [p for p in argv[2].split(",") if p]
+    global PARTS, RENDER
+    while len(argv) >= 3 and argv[1] in ("--parts", "--render"):
+        if argv[1] == "--parts":
+            PARTS = [p for p in argv[2].split(",") if p]
+        else:
+            RENDER = argv[2]
+            os.makedirs(RENDER, exist_ok=True)
         argv = argv[:1] + argv[3:]
     if len(argv) < 2:
         print(__doc__.strip().splitlines()[0], file=sys.stderr)
@@ -215,7 +345,7 @@ def main(argv):
     for path in argv[1:]:
         check = CHECKS.get(os.path.splitext(path)[1].lower())
         try:
-            require(check is not None, "unknown file type (expected .dxf, .svg or .json)")
+            require(check is not None, "unknown file type (expected .dxf, .svg, .pdf or .json)")
             require(os.path.isfile(path), "no such file")
             print(f"ok   {path}: {check(path)}")
         except CheckFailed as e:

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Draws every bundled scene (fixtures/scenes/*.off) in the iso and front views to SVG, DXF and JSON
-# and runs the output checkers on the files (check_drawing.py: XML parse and rsvg-convert render,
-# ezdxf's audit, hlr-lines/1 keys):
+# (and the iso view to PDF) and runs the output checkers on the files (check_drawing.py: XML parse
+# and rsvg-convert render, ezdxf's audit, pdfinfo and pdftoppm, hlr-lines/1 keys):
 #   check_fixture_drawings.sh HLR CHECK_DRAWING_PY FIXTURES_DIR WORK_DIR
 # Exits 77 (CTest: skipped) with the reason when a checker is missing.
 set -eu
@@ -17,5 +17,6 @@ for mesh in "$fixtures"/*.off; do
     "$hlr" draw "$mesh" --view "$view" -o "$work/${stem}_$view.svg" -o "$work/${stem}_$view.dxf" \
       -o "$work/${stem}_$view.json" >/dev/null
   done
+  "$hlr" draw "$mesh" --view iso -o "$work/${stem}_iso.pdf" >/dev/null
 done
 exec /usr/bin/python3 "$checker" "$work"/*

@@ -8,3 +8,7 @@ if ! command -v rsvg-convert >/dev/null 2>&1; then
   echo "skipped: rsvg-convert is missing (apt-get install librsvg2-bin)"
   exit 77
 fi
+if ! command -v pdfinfo >/dev/null 2>&1 || ! command -v pdftoppm >/dev/null 2>&1; then
+  echo "skipped: pdfinfo or pdftoppm is missing (apt-get install poppler-utils)"
+  exit 77
+fi

@@ -10,18 +10,23 @@
 //                 the drawing's resolution) and their chains. Worked out once, it is handed to
 //                 both writers below (and its counts to the JSON's stats), so that a command
 //                 writing SVG and DXF merges and chains once.
+//                 Circles and arcs are recovered from the chains there (curves.hpp), and the
+//                 circles' centre marks made.
 //   lines_svg     a drawing on a sheet, in millimetres: visible lines continuous wide, hidden lines
-//                 dashed narrow (ISO 128, docs/FORMATS.md), each part's lines in a group of its own.
-//   lines_dxf     the same drawing as DXF R2000 in model units (millimetres), layers VISIBLE and
-//                 HIDDEN (one pair per part when the scene has several meshes), a dashed linetype
-//                 defined in the file, polylines as LWPOLYLINE.
+//                 dashed narrow, centre lines long-dash dotted narrow (ISO 128, docs/FORMATS.md),
+//                 each part's lines in a group of its own.
+//   lines_pdf     the same sheet as a vector PDF (cairo), line widths and dashes in millimetres.
+//   lines_dxf     the same drawing as DXF R2000 in model units, layers VISIBLE and HIDDEN (one
+//                 pair per part when the scene has several meshes) and CENTER, their linetypes
+//                 defined in the file, polylines as LWPOLYLINE, circles and arcs as CIRCLE and ARC.
 //
-// SVG and DXF draw the sheet lines. Merging is a tolerance on rounded output, for the eye; the
-// JSON keeps every piece as the exact engine made it.
+// SVG, PDF and DXF draw the sheet lines. Merging and curve recovery are tolerances on rounded
+// output, for the eye; the JSON keeps every piece as the exact engine made it.
 //
 // Writers return the document; the caller writes it to disk (atomically).
 #pragma once
 
+#include <hlr/export/curves.hpp>
 #include <hlr/export/surfaces.hpp>
 #include <hlr/hidden_line/lines.hpp>
 #include <hlr/hidden_line/raster.hpp>
@@ -35,7 +40,6 @@
 
 namespace hlr::exporter {
 
-using Point2 = std::array<double, 2>;
 using Point3 = std::array<double, 3>;
 
 // One piece of hlr-lines/1: view coordinates in model units.
@@ -83,6 +87,11 @@ struct LineDrawing {
   // "contact_degrees").
   std::size_t contact_segments = 0;
   double contact_degrees = 0;
+  // Likewise, the circles and arcs the sheet recovered ("circles", "arcs"); absent: not written.
+  struct CurveCounts {
+    std::size_t circles = 0, arcs = 0;
+  };
+  std::optional<CurveCounts> curves;
   // Total image-plane length of `segments` (what a drawing shows), visible and hidden, model units.
   double visible_length() const { return length(true); }
   double hidden_length() const { return length(false); }
@@ -117,10 +126,37 @@ struct DrawingStyle {
   // Intersection lines where two surfaces meet at less than this many degrees are contact lines of
   // nearly tangent surfaces (a shaft in a bore, tessellated differently): not drawn (0: all drawn).
   double contact_degrees = 10;
+  // ISO 128 line group: the width of the wide (visible) lines, mm; narrow lines are half as wide
+  // (0.18 in the 0.35 group), dashes in proportion (line_widths).
+  double line_group = 0.5;
+  bool circles = true;       // recover circles and arcs (curves.hpp) at merge_distance
+  bool centre_lines = true;  // centre marks on circles seen face-on (sheets: also cylinder axes)
+  // What one model unit is, in millimetres (--units: mm 1, cm 10, m 1000, in 25.4), and its name.
+  // `scale` and the scales below are sheet millimetres per model unit; the title block writes the
+  // ratio of sheet to part, scale / unit_mm.
+  double unit_mm = 1;
+  std::string units = "mm";
 };
 
+// The widths (mm) and dash patterns (mm, on and off) of ISO 128-20's line types in a line group:
+// 01.2 continuous wide (visible), 02.1 dashed narrow (hidden: dash 12d, gap 3d), 04.1 long-dash
+// dotted narrow (centre: dash 24d, gap 3d, dot 0.5d, gap 3d), d the narrow width.
+struct LineWidths {
+  double wide = 0.5, narrow = 0.25;
+  std::vector<double> hidden_dashes, centre_dashes;
+};
+// Nothing for a line group other than 0.25, 0.35, 0.5, 0.7 and 1.
+std::optional<LineWidths> line_widths(double line_group);
+
+// The ISO 5455 scale 1, 2 or 5 x 10^k nearest to `ratio` from below (the ratio itself when it is
+// one, up to rounding), and whether a ratio is one of them.
+double iso_scale_at_most(double ratio);
+bool is_iso_scale(double ratio);
+// "1:5", "2:1", "1:2.5": a ratio of sheet to part.
+std::string scale_label(double ratio);
+
 // The scale a drawing is made at: style.scale, or the largest ISO 5455 scale (1:1, 1:2, 1:5, ...,
-// 2:1, 5:1, ...) at which the drawing fits the sheet's drawing area.
+// 2:1, 5:1, ...) at which the drawing fits the sheet's drawing area (times style.unit_mm).
 double drawing_scale(const LineDrawing& drawing, const DrawingStyle& style);
 
 // Near-coincident segments drawn once, after ISO 128 precedence. Visible segments are taken first,
@@ -150,26 +186,38 @@ MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& st
 // One name per input file, and "mesh-N" for a mesh index beyond them.
 std::vector<std::string> part_names(const LineDrawing& drawing);
 
-// Drawing segments of one class and one mesh joined end to end: segments whose endpoints are equal
-// doubles are joined through every point where exactly two segments of that class and mesh meet
-// (the exact engine makes shared endpoints identical, so no tolerance). Visible chains first, then
-// hidden ones, each in the order of their first segment in the input; a closed loop has `closed`
-// set and does not repeat its first point.
-struct DrawingPolyline {
-  std::vector<Point2> points;
-  bool closed = false;
-  bool visible = true;
-  std::uint32_t mesh = 0;
-};
+// Drawing segments of one class and one mesh joined end to end (DrawingPolyline, curves.hpp):
+// segments whose endpoints are equal doubles are joined through every point where exactly two
+// segments of that class and mesh meet (the exact engine makes shared endpoints identical, so no
+// tolerance). Visible chains first, then hidden ones, each in the order of their first segment in
+// the input; a closed loop has `closed` set and does not repeat its first point.
 std::vector<DrawingPolyline> chain_segments(const std::vector<DrawingSegment>& segments);
 
-// The sheet of `drawing` in `style`, for lines_svg and lines_dxf.
+// The sheet of `drawing` in `style`, for lines_svg, lines_pdf and lines_dxf.
 struct SheetLines {
-  double scale = 1;                     // drawing_scale(drawing, style)
-  MergedSegments merged;                // sheet_segments(drawing, style)
-  std::vector<DrawingPolyline> chains;  // chain_segments(merged.segments)
+  double scale = 1;                      // sheet mm per model unit
+  MergedSegments merged;                 // sheet_segments(drawing, style)
+  std::vector<DrawingPolyline> chains;   // chain_segments(merged.segments)
+  DrawingCurves curves;                  // the chains with their circles and arcs (what is drawn)
+  std::vector<CentreLine> centre_lines;  // centre marks, model units
 };
+// Without style.scale, the scale is drawing_scale's, or the next smaller ISO scale if the
+// recovered circles (which reach out beyond their polygons) do not fit at it.
 SheetLines sheet_lines(const LineDrawing& drawing, const DrawingStyle& style);
+// The same lines at a given scale.
+SheetLines sheet_lines_at(const LineDrawing& drawing, const DrawingStyle& style, double scale);
+
+// What the drawn lines of a sheet cover, in model units: nothing when none is drawn.
+struct Bounds {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  double width() const { return x1 - x0; }
+  double height() const { return y1 - y0; }
+};
+std::optional<Bounds> sheet_bounds(const SheetLines& sheet);
+
+// Why a one-view sheet does not fit its sheet's drawing area at its scale ("the drawing needs
+// 400 x 120 mm at 2:1; the drawing area of A4 is 257 x 160 mm"), or nothing when it fits.
+std::optional<std::string> sheet_overflow(const SheetLines& sheet, const DrawingStyle& style);
 
 // The hlr-lines/1 document, handed to `sink` in blocks of about a megabyte as it is made (the
 // document of a large drawing is never held whole; `sink` writes the blocks out, in order). Its
@@ -184,8 +232,10 @@ void write_lines_json(const LineDrawing& drawing, const std::function<void(std::
 std::string lines_json(const LineDrawing& drawing, const std::function<double()>& write_seconds = {});
 // `sheet` must be sheet_lines(drawing, style); the overloads without it work it out themselves.
 std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& sheet);
+std::string lines_pdf(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& sheet);
 std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& sheet);
 std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style);
+std::string lines_pdf(const LineDrawing& drawing, const DrawingStyle& style);
 std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style);
 
 #define HLR_EXPORT_LINES_DECLARE(K, EXTERN)                                                              \

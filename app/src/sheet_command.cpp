@@ -1,0 +1,208 @@
+// `hlr sheet MESH... [--views front,top,right,iso] [--dir X,Y,Z [--up X,Y,Z]] [--projection
+//             first|third] [sheet options: style_options.hpp] [--title T --number N --author A
+//             --date D --revision R] -o OUT.svg|OUT.pdf|OUT.dxf [-o ...]`
+//
+// Several views of one scene on one sheet: each view is drawn exactly as `hlr draw --view NAME`
+// draws it (line_runs.hpp: the same solve, one intersection search for all views), then laid out
+// by the export library (hlr/export/sheet.hpp) and written in every format asked for.
+#include "atomic_file.hpp"
+#include "errors.hpp"
+#include "line_runs.hpp"
+#include "style_options.hpp"
+#include "subcommand.hpp"
+
+#include <hlr/export/sheet.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace hlr::app {
+namespace {
+
+struct SheetOptions {
+  std::vector<std::string> meshes, outputs;
+  std::string views = "front,top,right,iso";
+  std::vector<double> direction, up;
+  std::string projection = "third";
+  std::string kernel = "exact";
+  int threads = 0;
+  LineRunSettings lines;
+  StyleOptions style;
+  exporter::SheetFields fields;
+};
+
+enum class Format { svg, pdf, dxf };
+
+Format format_of(const std::string& path) {
+  if (has_extension(path, ".svg")) return Format::svg;
+  if (has_extension(path, ".pdf")) return Format::pdf;
+  if (has_extension(path, ".dxf")) return Format::dxf;
+  throw UserError(path, "unknown output format (the name must end in .svg, .pdf or .dxf)");
+}
+
+// The views to draw, by name, or nothing after a one-line usage error.
+std::optional<std::vector<View>> resolve_views(const SheetOptions& options) {
+  std::vector<View> views;
+  std::vector<std::string> names;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = options.views.find(',', start);
+    names.push_back(options.views.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (options.views.empty()) names.clear();
+  for (const auto& name : names) {
+    View view;
+    if (!named_view(name, view)) {
+      std::cerr << "hlr: --views: unknown view \"" << name << "\" (use " << named_view_list << ")" << std::endl;
+      return std::nullopt;
+    }
+    for (const auto& v : views)
+      if (v.name == view.name) {
+        std::cerr << "hlr: --views: view \"" << name << "\" is listed twice" << std::endl;
+        return std::nullopt;
+      }
+    views.push_back(view);
+  }
+  if (!options.direction.empty()) {
+    SceneOptions scene;
+    scene.direction = options.direction;
+    scene.up = options.up;
+    const auto view = resolve_view(scene);  // "custom", checked
+    if (!view) return std::nullopt;
+    views.push_back(*view);
+  }
+  if (views.empty()) {
+    std::cerr << "hlr: --views: no view to draw" << std::endl;
+    return std::nullopt;
+  }
+  return views;
+}
+
+int run(const SheetOptions& options) {
+  SceneOptions scene_options;
+  scene_options.threads = options.threads;
+  const auto threads = thread_limit(scene_options);
+  const auto views = resolve_views(options);
+  if (!views) return kExitUsage;
+  const auto style = resolve_style(options.style);
+  if (!style) return kExitUsage;
+  KernelKind kind = KernelKind::exact;
+  parse_kernel_kind(options.kernel, kind);
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Format> formats;
+  for (const auto& out : options.outputs) formats.push_back(format_of(out));
+  // Every output is opened before the work starts and all are committed together at the end.
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  for (const auto& out : options.outputs) files.push_back(std::make_unique<AtomicFile>(out));
+
+  scene_options.meshes = options.meshes;
+  scene_options.kernel = options.kernel;
+  const Scene scene = load_scene(options.meshes);
+  LineRunSettings settings = options.lines;
+  settings.progress = scene.input.faces >= 10000;
+  const Intersections intersections(scene, settings);  // model space: found once, for all views
+  std::vector<exporter::LineDrawing> drawings;
+  drawings.reserve(views->size());
+  for (std::size_t i = 0; i < views->size(); ++i) {
+    if (settings.progress)
+      std::cerr << "hlr: view " << (*views)[i].name << " (" << i + 1 << " of " << views->size() << ")\n";
+    drawings.push_back(kernel_drawing(scene_options, scene, (*views)[i], kind, intersections, settings));
+  }
+  const double solved = seconds_since(start);
+
+  const auto write_start = std::chrono::steady_clock::now();
+  exporter::SheetSpec spec;
+  spec.style = *style;
+  spec.projection = options.projection == "first" ? exporter::Projection::first_angle : exporter::Projection::third_angle;
+  spec.fields = options.fields;
+  std::vector<exporter::SheetViewInput> inputs;
+  for (std::size_t i = 0; i < views->size(); ++i) inputs.push_back({(*views)[i].name, &drawings[i]});
+  exporter::SheetLayout layout;
+  try {
+    layout = exporter::lay_out_sheet(inputs, spec);
+  } catch (const exporter::SheetError& e) {
+    throw UsageError(e.what());
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    switch (formats[i]) {
+      case Format::svg: files[i]->write(exporter::sheet_svg(layout, spec)); break;
+      case Format::pdf: files[i]->write(exporter::sheet_pdf(layout, spec)); break;
+      case Format::dxf: files[i]->write(exporter::sheet_dxf(layout, spec)); break;
+    }
+  }
+  for (auto& file : files) file->commit();
+  const double written = seconds_since(write_start);
+
+  std::cout << "hlr sheet: " << scene.input.faces << " faces, " << views->size() << " views, "
+            << (spec.projection == exporter::Projection::first_angle ? "first" : "third") << " angle, "
+            << style->sheet.name << " at " << exporter::scale_label(layout.ratio) << '\n';
+  for (const auto& v : layout.views) {
+    const auto& st = v.drawing->stats;
+    std::cout << "  " << v.name << ": " << st.visible_pieces << " visible and " << st.hidden_pieces << " hidden pieces, "
+              << v.lines.curves.circles.size() << " circles, " << v.lines.curves.arcs << " arcs, "
+              << v.lines.centre_lines.size() << " centre lines\n";
+  }
+  std::cout << "  outputs written in " << written << " s (" << solved + written << " s in all)\n";
+  for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
+  return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_sheet_command(CLI::App& parent) {
+  auto options = std::make_shared<SheetOptions>();
+  CLI::App* cmd = parent.add_subcommand(
+      "sheet", "Draw several views of a scene on one sheet: aligned after ISO 5456-2, one scale, a title block.");
+  cmd->add_option("meshes", options->meshes, "mesh files (OFF, OBJ, STL, PLY), drawn together as one scene")
+      ->required()
+      ->type_name("MESH...");
+  cmd->add_option("-o,--output", options->outputs,
+                  "file to write, by extension: .svg or .pdf (the sheet in mm) or .dxf (R2000, mm: a block per "
+                  "view); may be given several times")
+      ->required()
+      ->type_name("OUT");
+  cmd->add_option("--views", options->views,
+                  std::string("views to draw, separated by commas: any of ") + named_view_list +
+                      " (the principal ones placed after ISO 5456-2, the others in free corners)")
+      ->capture_default_str()
+      ->type_name("LIST");
+  auto* dir = cmd->add_option("--dir", options->direction, "one more view, looking along this direction (in a free corner)")
+                  ->delimiter(',')
+                  ->expected(3)
+                  ->type_name("X,Y,Z");
+  cmd->add_option("--up", options->up, "up vector for --dir (default +Z, or +Y when looking along Z)")
+      ->delimiter(',')
+      ->expected(3)
+      ->needs(dir)
+      ->type_name("X,Y,Z");
+  cmd->add_option("--projection", options->projection,
+                  "ISO 5456-2 method: third (top view above the front view, right view to its right) or first "
+                  "(top view below, right view to the left)")
+      ->check(CLI::IsMember({"first", "third"}))
+      ->capture_default_str()
+      ->type_name("METHOD");
+  add_line_options(*cmd, options->lines);
+  options->style.sheet = "A3";
+  add_style_options(*cmd, options->style);
+  cmd->add_option("--title", options->fields.title, "title block: title")->type_name("TEXT");
+  cmd->add_option("--number", options->fields.number, "title block: drawing number")->type_name("TEXT");
+  cmd->add_option("--author", options->fields.author, "title block: created by")->type_name("TEXT");
+  cmd->add_option("--date", options->fields.date, "title block: date of issue")->type_name("TEXT");
+  cmd->add_option("--revision", options->fields.revision, "title block: revision")->type_name("TEXT");
+  add_kernel_option(*cmd, options->kernel);
+  cmd->add_option("--threads", options->threads, "threads to use (0: every core); the output is the same for any number")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str()
+      ->type_name("N");
+  cmd->footer(
+      "Example:\n"
+      "  hlr sheet fixtures/parts/flange.off --views front,top,right,iso --projection first --sheet A3 \\\n"
+      "            --title Flange --number HLR-001 -o out/flange.pdf -o out/flange.dxf\n"
+      "\n"
+      "Each view is drawn as 'hlr draw --view NAME' draws it. Formats: docs/FORMATS.md, \"hlr sheet\".");
+  return {cmd, [options] { return run(*options); }};
+}
+
+}  // namespace hlr::app

@@ -3,6 +3,7 @@
 #include <tbb/task_group.h>
 
 #include <iostream>
+#include <optional>
 
 namespace hlr::app {
 namespace {
@@ -35,9 +36,13 @@ exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kin
   auto solution = std::make_unique<Solution<K>>();
   const auto begin = std::chrono::steady_clock::now();
   const bool found_before = intersections.found();
-  tbb::task_group beside;  // with one thread, run by wait() below
-  beside.run([&] { intersections.segments(); });
-  auto mark = begin;
+  // Beside the polygon stages (with one thread, run by wait() below); on a small scene first, as
+  // starting the scheduler would take longer than they do.
+  constexpr std::size_t kFacesBeside = 2000;
+  std::optional<tbb::task_group> beside;
+  if (scene.input.faces >= kFacesBeside) beside.emplace().run([&] { intersections.segments(); });
+  else intersections.segments();
+  auto mark = std::chrono::steady_clock::now();
   stage(settings, std::to_string(scene.input.faces) + " faces; building polygons (" + kernel_name(kind) + ")");
   solution->sources = hidden_line::build_sources<K>(scene.meshes, frame);
   times.sources = seconds_since(mark);
@@ -46,7 +51,7 @@ exporter::LineDrawing solve(const Scene& scene, const View& view, KernelKind kin
   // A drawing needs only the visible polygons: what the front pieces hide is not kept.
   solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false});
   times.sort = seconds_since(mark);
-  beside.wait();
+  if (beside) beside->wait();
   times.intersections = intersections.seconds();
   stage(settings, "classifying feature lines");
   mark = std::chrono::steady_clock::now();

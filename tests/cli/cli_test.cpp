@@ -711,8 +711,12 @@ class CliDraw : public CliClip {
   void expect_failure(const std::vector<std::string>& args, int code, const std::string& prefix) const {
     std::vector<std::string> all{"draw"};
     all.insert(all.end(), args.begin(), args.end());
+    expect_failed_run(all, code, prefix);
+  }
+  // The same for any command line.
+  void expect_failed_run(const std::vector<std::string>& all, int code, const std::string& prefix) const {
     Outcome run = hlr(all);
-    SCOPED_TRACE(::testing::PrintToString(args));
+    SCOPED_TRACE(::testing::PrintToString(all));
     EXPECT_EQ(run.exit_code, code) << run.err;
     EXPECT_EQ(count_lines(run.err), 1u) << run.err;
     EXPECT_EQ(run.err.rfind(prefix, 0), 0u) << run.err;
@@ -1098,12 +1102,7 @@ class CliSheet : public CliDraw {
   void expect_sheet_failure(const std::vector<std::string>& args, int code, const std::string& prefix) const {
     std::vector<std::string> all{"sheet", (kBundledParts / "flange.off").string()};
     all.insert(all.end(), args.begin(), args.end());
-    Outcome run = hlr(all);
-    SCOPED_TRACE(::testing::PrintToString(args));
-    EXPECT_EQ(run.exit_code, code) << run.err;
-    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
-    EXPECT_EQ(run.err.rfind(prefix, 0), 0u) << run.err;
-    EXPECT_TRUE(entries(dir_ / "out").empty()) << run.err;
+    expect_failed_run(all, code, prefix);
   }
 };
 

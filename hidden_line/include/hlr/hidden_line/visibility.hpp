@@ -114,7 +114,7 @@ struct AreaSortOptions {
   // Screen subdivision (exact kernel): the image is cut into vertical strips of about this many
   // sources each (at most 8), sorted in parallel; 0 never cuts it. Fragments that reach across a
   // strip border come out as one piece per strip. The strips do not depend on the thread count.
-  std::size_t sources_per_strip = 4096;
+  std::size_t sources_per_strip = 256;
 };
 
 // Solves visibility for the sources; appends the lines of strip borders and penetration splits to

@@ -37,7 +37,10 @@ class Intersections {
  public:
   Intersections(const Scene& scene, const LineRunSettings& settings) : scene_(scene), settings_(settings) {}
   const std::vector<hidden_line::IntersectionSegment>& segments() const;  // finds them on the first call
-  double seconds() const { return segments(), seconds_; }
+  double seconds() const {
+    segments();
+    return seconds_;
+  }
   bool found() const { return found_; }
 
  private:

@@ -13,7 +13,7 @@
 # columns: mesh, view, faces, sources, hlr_exact_s, hlr_epick_s, hlr_double_s, lineart_s,
 #          ratio_exact_lineart
 #   hlr_*_s      stats.seconds of hlr's JSON (total: read + sources + sort; minimum over
-#                HLR_REPEAT runs), or "failed" when
+#                HLR_REPEAT runs), "not run" for a kernel KERNELS leaves out, or "failed" when
 #                hlr exits non-zero (expected often for epick/double on real meshes) or times out
 #   faces        stats.faces (input faces), sources = stats.sources (polygons after back-face
 #                removal and consolidation), both from the exact kernel (else the first kernel
@@ -31,7 +31,7 @@
 #   REPEAT   peer repeats (minimum is taken)     (default 5; REPEAT=1 when time is short)
 #   HLR_REPEAT  runs of each hlr command; the one with the least stats.seconds is reported
 #            (default 1)
-#   THREADS  peer threads                        (default 1; hlr is single-threaded)
+#   THREADS  peer threads                        (default 1; HLR_THREADS sets hlr's, bench/common.sh)
 #   TIMEOUT  seconds allowed per hlr run, 0 = no limit (default 0); a timeout counts as "failed"
 #   HLR      hlr binary                          (default build/app/hlr)
 #   PYTHON   python for JSON/CSV work            (default /usr/bin/python3)
@@ -92,8 +92,9 @@ with open(out, "w", newline="") as f:
         la = float(pr["lineart_seconds"]) if pr else None
         ex = ks.get("exact")
         ratio = "%.1f" % (ex["seconds"] / la) if (ex and la) else "n/a"
-        row = [key[0], key[1], faces, sources, sec(ks.get("exact")), sec(ks.get("epick")),
-               sec(ks.get("double")), "%.6f" % la if la is not None else "failed", ratio]
+        run = lambda k: sec(ks[k]) if k in ks else "not run"  # KERNELS left it out
+        row = [key[0], key[1], faces, sources, run("exact"), run("epick"), run("double"),
+               "%.6f" % la if la is not None else "failed", ratio]
         w.writerow(row)
         st = ""
         if ex:

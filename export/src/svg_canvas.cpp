@@ -14,21 +14,20 @@ class SvgCanvas final : public Canvas {
  public:
   SvgCanvas(double width, double height, const std::string& title) {
     out_.reserve(1 << 16);
-    out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"";
-    mm(width);
-    out_ += "mm\" height=\"";
-    mm(height);
-    out_ += "mm\" viewBox=\"0 0 ";
-    mm(width);
-    out_ += ' ';
-    mm(height);
+    out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\"";
+    attr("width", width, "mm");
+    attr("height", height, "mm");
+    out_ += " viewBox=\"0 0";
+    for (double v : {width, height}) {
+      out_ += ' ';
+      mm(v);
+    }
     out_ += "\">\n<title>";
     out_ += xml_escape(title);
-    out_ += "</title>\n<rect width=\"";
-    mm(width);
-    out_ += "\" height=\"";
-    mm(height);
-    out_ += "\" fill=\"#fff\"/>\n";
+    out_ += "</title>\n<rect";
+    attr("width", width);
+    attr("height", height);
+    out_ += " fill=\"#fff\"/>\n";
   }
 
   void begin(const GroupStyle& g) override {
@@ -36,9 +35,8 @@ class SvgCanvas final : public Canvas {
     if (!g.id.empty()) out_ += " id=\"" + xml_escape(g.id) + '"';
     if (!g.cls.empty()) out_ += " class=\"" + xml_escape(g.cls) + '"';
     if (g.pen) {
-      out_ += " fill=\"none\" stroke=\"#000\" stroke-width=\"";
-      mm(g.pen->width);
-      out_ += '"';
+      out_ += " fill=\"none\" stroke=\"#000\"";
+      attr("stroke-width", g.pen->width);
       if (!g.pen->dashes.empty()) {
         out_ += " stroke-dasharray=\"";
         for (std::size_t i = 0; i < g.pen->dashes.size(); ++i) {
@@ -87,50 +85,34 @@ class SvgCanvas final : public Canvas {
       }
     }
     out_ += '"';
-    if (dash_offset != 0) {
-      out_ += " stroke-dashoffset=\"";
-      mm(dash_offset);
-      out_ += '"';
-    }
+    if (dash_offset != 0) attr("stroke-dashoffset", dash_offset);
     out_ += "/>\n";
   }
 
   void rect(double x, double y, double width, double height, std::optional<double> stroke_width) override {
-    out_ += "<rect x=\"";
-    mm(x);
-    out_ += "\" y=\"";
-    mm(y);
-    out_ += "\" width=\"";
-    mm(width);
-    out_ += "\" height=\"";
-    mm(height);
-    out_ += '"';
-    if (stroke_width) {
-      out_ += " stroke-width=\"";
-      mm(*stroke_width);
-      out_ += '"';
-    }
+    out_ += "<rect";
+    attr("x", x);
+    attr("y", y);
+    attr("width", width);
+    attr("height", height);
+    if (stroke_width) attr("stroke-width", *stroke_width);
     out_ += "/>\n";
   }
 
   void circle(double cx, double cy, double r) override {
-    out_ += "<circle cx=\"";
-    mm(cx);
-    out_ += "\" cy=\"";
-    mm(cy);
-    out_ += "\" r=\"";
-    mm(r);
-    out_ += "\"/>\n";
+    out_ += "<circle";
+    attr("cx", cx);
+    attr("cy", cy);
+    attr("r", r);
+    out_ += "/>\n";
   }
 
   void text(double x, double y, double size, const std::string& text) override {
-    out_ += "<text x=\"";
-    mm(x);
-    out_ += "\" y=\"";
-    mm(y);
-    out_ += "\" font-size=\"";
-    mm(size);
-    out_ += "\">";
+    out_ += "<text";
+    attr("x", x);
+    attr("y", y);
+    attr("font-size", size);
+    out_ += '>';
     out_ += xml_escape(text);
     out_ += "</text>\n";
   }
@@ -142,6 +124,15 @@ class SvgCanvas final : public Canvas {
 
  private:
   void mm(double v) { append_fixed(out_, v, 4); }
+  // name="v" (with a unit after the number, if given), after a space.
+  void attr(const char* name, double v, const char* unit = "") {
+    out_ += ' ';
+    out_ += name;
+    out_ += "=\"";
+    mm(v);
+    out_ += unit;
+    out_ += '"';
+  }
   void point(char op, double x, double y) {
     out_ += op;
     mm(x);

@@ -51,7 +51,15 @@ struct ImageLine {
     const FT rx = G::x(c) - G::x(a), ry = G::y(c) - G::y(a);
     return (rx * ey - ry * ex) / (dx * ey - dy * ex);
   }
-  P at(const FT& t) const { return G::point(G::x(a) + t * dx, G::y(a) + t * dy); }
+  // On the exact kernel the line's own ends for t exactly 0 or 1, rather than constructions equal
+  // to them.
+  P at(const FT& t) const {
+    if constexpr (G::exact_constructions) {
+      const auto [lo, hi] = CGAL::to_interval(t);
+      if (lo == hi && (lo == 0 || lo == 1)) return lo == 0 ? a : b;
+    }
+    return G::point(G::x(a) + t * dx, G::y(a) + t * dy);
+  }
   CGAL::Bbox_2 bbox() const { return G::bbox(a) + G::bbox(b); }
 };
 
@@ -529,17 +537,20 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
     std::sort(covered.begin(), covered.end());
     const FeatureLine<K>& line = lines.lines[span.line];
     FT from = span.t0;
-    auto emit = [&](const FT& t0, const FT& t1) {
-      const DrawnSegment<K> d{image.at(t0), image.at(t1), span.visible, line.mesh, line.meeting_degrees};
+    bool at_start = true;  // from is span.t0, whose point is a
+    auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
+      const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
+                              line.meeting_degrees};
       grid.insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
       out.push_back(d);
       drawn.push_back({span.line, t0, t1, span.visible});
     };
     for (const auto& [lo, hi] : covered) {
-      if (from < lo) emit(from, lo);
+      if (from < lo) emit(from, lo, false);
       from = std::max(from, hi);
+      at_start = false;
     }
-    if (from < span.t1) emit(from, span.t1);
+    if (from < span.t1) emit(from, span.t1, true);
   }
   return out;
 }

@@ -27,13 +27,6 @@ struct Item {
   CGAL::Bbox_2 box;
 };
 
-template <class K>
-CGAL::Bbox_2 box_of(const clip::Polygon<K>& p) {
-  CGAL::Bbox_2 box;
-  for (const auto& q : p.outer.points) box += Geometry<K>::bbox(q);
-  return box;
-}
-
 // Rough depth order: the nearest corner of each source, in double (only a heuristic).
 template <class K>
 std::vector<double> rough_depths(const std::vector<SourcePolygon<K>>& polygons) {

@@ -9,6 +9,8 @@
 // box that overlaps; it only filters, it decides nothing.
 #pragma once
 
+#include <hlr/clipper/clipper.hpp>
+
 #include <CGAL/Bbox_2.h>
 
 #include <algorithm>
@@ -17,6 +19,14 @@
 #include <vector>
 
 namespace hlr::hidden_line::detail {
+
+// A polygon's box: its outer contour's (the holes lie inside it).
+template <class K>
+CGAL::Bbox_2 box_of(const clip::Polygon<K>& p) {
+  CGAL::Bbox_2 box;
+  for (const auto& q : p.outer.points) box += Geometry<K>::bbox(q);
+  return box;
+}
 
 class LooseGrid {
  public:

@@ -181,7 +181,7 @@ class Classifier {
           if (at.empty() || at.back() != std::int32_t(s)) at.push_back(std::int32_t(s));  // sources come in order
         }
     }
-    for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid_.insert(i, polygon_bbox(map.visible[i].polygon));
+    for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid_.insert(i, box_of(map.visible[i].polygon));
     for (std::uint32_t i = 0; i < sources.edge_on_edges.size(); ++i) {
       const auto [m, v0, v1] = sources.edge_on_edges[i];
       edge_on_grid_.insert(i, G::bbox(image(m, v0)) + G::bbox(image(m, v1)));
@@ -378,14 +378,9 @@ class Classifier {
   }
 
  private:
-  static CGAL::Bbox_2 polygon_bbox(const clip::Polygon<K>& polygon) {
-    CGAL::Bbox_2 box;
-    for (const auto& p : polygon.outer.points) box += G::bbox(p);
-    return box;
-  }
   static CGAL::Bbox_2 domain(const VisibilityMap<K>& map) {
     CGAL::Bbox_2 box;
-    for (const auto& frag : map.visible) box += polygon_bbox(frag.polygon);
+    for (const auto& frag : map.visible) box += box_of(frag.polygon);
     return box;
   }
   const P& image(std::uint32_t mesh, std::uint32_t v) const { return sources_.image_points[mesh][v]; }

@@ -146,7 +146,6 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     for (std::uint32_t f = 0; f < nf; ++f) {
       if (facing[f] == 0) {
         ++out.stats.edge_on_faces_removed;
-        out.edge_on_faces.push_back({mi, f});
       } else if (facing[f] * topo.outward[f] < 0 && options.remove_back_faces) {
         ++out.stats.back_faces_removed;
       } else {

@@ -59,11 +59,11 @@ class FaceNormals {
 
   FaceNormals(const Mesh& mesh, const View& view) : mesh_(mesh), approx_(mesh.faces.size()), exact_(mesh.faces.size()) {
     facing_.resize(mesh.faces.size());
-    for (int k = 0; k < 3; ++k) toward_viewer_[k] = -view.direction[k];
+    const double toward_viewer[3] = {-view.direction[0], -view.direction[1], -view.direction[2]};
     std::vector<std::size_t> undecided;
     {
       CGAL::Protect_FPU_rounding<true> protect;
-      const std::array<IA, 3> d{IA(toward_viewer_[0]), IA(toward_viewer_[1]), IA(toward_viewer_[2])};
+      const std::array<IA, 3> d{IA(toward_viewer[0]), IA(toward_viewer[1]), IA(toward_viewer[2])};
       for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         approx_[f] = face_normal<IA>(mesh, mesh.faces[f]);
         const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(dot(approx_[f], d));
@@ -71,7 +71,7 @@ class FaceNormals {
         else undecided.push_back(f);
       }
     }
-    const std::array<FT, 3> d{FT(toward_viewer_[0]), FT(toward_viewer_[1]), FT(toward_viewer_[2])};
+    const std::array<FT, 3> d{FT(toward_viewer[0]), FT(toward_viewer[1]), FT(toward_viewer[2])};
     for (std::size_t f : undecided) facing_[f] = CGAL::sign(dot(exact(f), d));
   }
 
@@ -98,7 +98,6 @@ class FaceNormals {
   }
 
   const Mesh& mesh_;
-  double toward_viewer_[3];
   std::vector<std::array<IA, 3>> approx_;
   std::vector<std::optional<std::array<FT, 3>>> exact_;
   std::vector<int> facing_;

@@ -66,10 +66,9 @@ struct Sources {
   std::vector<SourcePolygon<K>> polygons;
   clip::LineTable<K> lines;
   std::vector<LineOrigin> line_origins;  // parallel to lines
-  std::vector<std::array<std::uint32_t, 2>> edge_on_faces;  // (mesh, face) of the faces dropped edge-on
-  // (mesh, v0, v1) of the edges of those faces that can cover a line: each edge once, and with
-  // `consolidate` not the edges between two of a region's coplanar triangles (the region covers
-  // what its boundary covers).
+  // (mesh, v0, v1) of the edges of the faces dropped edge-on that can cover a line: each edge
+  // once, and with `consolidate` not the edges between two of a region's coplanar triangles (the
+  // region covers what its boundary covers).
   std::vector<std::array<std::uint32_t, 3>> edge_on_edges;
   std::vector<std::vector<ViewPoint<K>>> view_points;        // per mesh, per input vertex
   std::vector<std::vector<typename Geometry<K>::Point>> image_points;  // the same, projected: the

@@ -23,6 +23,8 @@ packages=(
   python3-matplotlib
   # peer in the clipper benchmark (Clipper 1, integer coordinates)
   libpolyclipping-dev
+  # fuzzing (scripts/fuzz.sh): clang's libFuzzer and sanitizers
+  clang libfuzzer-14-dev
 )
 
 missing=()

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The default test suite under AddressSanitizer and UndefinedBehaviorSanitizer, in build-sanitized/
-# (a separate Debug-info build: about three times slower to build and to run than the default one).
+# (a separate build with debug info, slower to build and to run than the default one).
 # Extra arguments go to ctest (e.g. -L cli, or -E soak to change what runs).
 set -euo pipefail
 cd "$(dirname "$0")/.."

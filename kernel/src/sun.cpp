@@ -1,8 +1,10 @@
 // The sun's direction (sun.hpp) through libnova.
 #include <hlr/kernel/sun.hpp>
 
+#include <libnova/earth.h>
 #include <libnova/julian_day.h>
-#include <libnova/solar.h>
+#include <libnova/nutation.h>
+#include <libnova/precession.h>
 #include <libnova/transform.h>
 
 #include <charconv>
@@ -224,8 +226,24 @@ SunPosition sun_position(const LocalTime& time, const Site& site) {
   const LocalTime utc = from_local_minutes(local_minutes(time) - time.offset_minutes, 0);
   ln_date date{utc.year, utc.month, utc.day, utc.hour, utc.minute, 0.0};
   const double jd = ln_get_julian_day(&date);
+  // libnova's VSOP87 Earth is referred to the ecliptic and equinox of J2000, and 0.16's
+  // ln_get_solar_equ_coords takes it as of date (0.36° off in 2026: 50" a year of precession;
+  // Meeus' example 25.b comes out 0.10° off in right ascension). So: the Sun's J2000 ecliptic
+  // position from the Earth's, aberration (-20.4898" / R) and nutation in longitude, to J2000
+  // equatorial coordinates (mean obliquity of J2000), then precessed to the date. Example 25.b
+  // then agrees to 0.001°, and NOAA's solar calculator to about 0.003° (kernel/tests/sun_test.cpp).
+  ln_helio_posn earth{};
+  ln_get_earth_helio_coords(jd, &earth);
+  ln_nutation nutation{};
+  ln_get_nutation(jd, &nutation);
+  const double rad = M_PI / 180;
+  const double lambda = (earth.L + 180 - 20.4898 / 3600 / earth.R + nutation.longitude) * rad;
+  const double beta = -earth.B * rad, eps = 23.4392911 * rad;
+  ln_equ_posn j2000{};
+  j2000.ra = std::fmod(std::atan2(std::sin(lambda) * std::cos(eps) - std::tan(beta) * std::sin(eps), std::cos(lambda)) / rad + 360, 360);
+  j2000.dec = std::asin(std::sin(beta) * std::cos(eps) + std::cos(beta) * std::sin(eps) * std::sin(lambda)) / rad;
   ln_equ_posn equ{};
-  ln_get_solar_equ_coords(jd, &equ);
+  ln_get_equ_prec2(&j2000, JD2000, jd, &equ);
   ln_lnlat_posn observer{site.longitude, site.latitude};
   ln_hrz_posn hrz{};
   ln_get_hrz_from_equ(&equ, &observer, jd, &hrz);

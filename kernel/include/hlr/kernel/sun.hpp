@@ -1,8 +1,9 @@
 // hlr kernel, sun: the direction of sunlight at a date, time and place, for `--sun-at` (DESIGN.md,
-// "Shadows"). The sun's position comes from libnova (Debian's libnova-dev): apparent equatorial
-// coordinates by VSOP87 (Meeus, "Astronomical Algorithms", ch. 25), then horizontal coordinates
-// for the site. It is geometric: no atmospheric refraction (which lifts the sun by about 0.5° at
-// the horizon and under 0.03° above 30°); README.md, "hlr shadows", says what that means.
+// "Shadows"). The sun's position comes from libnova (Debian's libnova-dev): the Earth by VSOP87,
+// nutation, precession to the date and horizontal coordinates for the site (Meeus, "Astronomical
+// Algorithms", ch. 25; sun.cpp says why not libnova's own ln_get_solar_equ_coords). Within about
+// 0.003° of NOAA's solar calculator. It is geometric: no atmospheric refraction (which lifts the
+// sun by about 0.5° at the horizon and under 0.03° above 30°).
 //
 // Times are ISO 8601 local times with a UTC offset, "YYYY-MM-DDTHH:MM[+HH:MM|-HH:MM|Z]" (no
 // offset: UTC). A sun study is "START/END/STEP": END a full time or "HH:MM" on START's date and

@@ -5,7 +5,7 @@
 // The exact drawing is the reference (docs/STABILITY.md says why, case by case).
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "line_runs.hpp"
+#include "line_options.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/export/check.hpp>
@@ -22,7 +22,7 @@ struct CheckOptions {
   std::vector<int> rasters;
   std::vector<std::string> kernels;
   std::string diff, json;
-  LineRunSettings lines;
+  exporter::DrawOptions lines;
 };
 
 std::string percent(double fraction) {
@@ -56,12 +56,11 @@ int run(CheckOptions options) {
     json_file = std::make_unique<AtomicFile>(options.json);
   }
 
-  const Scene scene = load_scene(options.scene.meshes);
-  LineRunSettings settings = options.lines;
-  settings.progress = scene.input.faces >= 10000;
-  const Intersections intersections(scene, settings);
-  const exporter::LineDrawing reference =
-      kernel_drawing(options.scene, scene, *view, KernelKind::exact, intersections, settings);
+  const Scene scene = read_scene(options.scene.meshes);
+  exporter::DrawOptions job = options.lines;
+  job.progress = stage_lines(scene.input.faces >= 10000);
+  const exporter::SceneIntersections intersections(scene, job.intersections, job.progress);  // for every method
+  const exporter::LineDrawing reference = exporter::draw_lines(scene, *view, job, &intersections);
 
   exporter::CheckReport report;
   report.input = scene.input;
@@ -73,10 +72,10 @@ int run(CheckOptions options) {
   for (const std::string& name : options.kernels) {
     exporter::CheckedMethod m;
     m.method = name;
-    KernelKind kind = KernelKind::exact;
-    parse_kernel_kind(name, kind);
+    exporter::DrawOptions method = job;
+    parse_kernel_kind(name, method.kernel);
     try {
-      const exporter::LineDrawing drawing = kernel_drawing(options.scene, scene, *view, kind, intersections, settings);
+      const exporter::LineDrawing drawing = exporter::draw_lines(scene, *view, method, &intersections);
       m.seconds = drawing.times.total;
       m.agreement = exporter::compare_drawings(reference, drawing);
     } catch (const UserError& e) {  // the kernel's own failure is a finding, not an error of the check
@@ -88,7 +87,7 @@ int run(CheckOptions options) {
     exporter::CheckedMethod m;
     m.method = "raster";
     m.resolution = resolution;
-    const RasterRun run = raster_drawing(scene, *view, resolution, intersections, settings);
+    const exporter::RasterRun run = exporter::draw_raster(scene, *view, resolution, job, &intersections);
     m.seconds = run.drawing.times.total;
     m.agreement = exporter::compare_drawings(reference, run.drawing);
     report.methods.push_back(std::move(m));

@@ -1,8 +1,9 @@
 // `hlr clip SUBJECT.json CLIP.json -o OUT.json [--exact] [--kernel exact|epick|double]`
-#include "clip_run.hpp"
+#include "atomic_file.hpp"
 #include "errors.hpp"
-#include "polygon_json.hpp"
 #include "subcommand.hpp"
+
+#include <hlr/export/polygons.hpp>
 
 #include <iostream>
 #include <memory>
@@ -17,18 +18,39 @@ struct ClipOptions {
   std::string kernel = "exact";
 };
 
+std::string plural(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 int run(const ClipOptions& options) {
-  ClipJob job;
-  job.subject_path = options.subject;
-  job.clip_path = options.clip;
-  job.output_path = options.output;
-  job.exact_output = options.exact;
-  job.summary = &std::cout;
-  job.subjects = read_polygons_file(options.subject);
-  job.clips = read_polygons_file(options.clip);
-  if (options.kernel == "epick") return run_clip_epick(job);
-  if (options.kernel == "double") return run_clip_double(job);
-  return run_clip_exact(job);
+  const auto subjects = exporter::read_polygons_file(options.subject);
+  const auto clips = exporter::read_polygons_file(options.clip);
+  exporter::ClipOptions job;
+  parse_kernel_kind(options.kernel, job.kernel);
+  job.subject_name = options.subject;
+  job.clip_name = options.clip;
+  job.exact_values = options.exact;
+  // Fail early on an output that cannot be written, before the clipping work.
+  AtomicFile output(options.output);
+  const exporter::ClipOutcome outcome = exporter::clip_polygons(subjects, clips, job);
+  output.write(exporter::clip_json(outcome));
+  output.commit();
+
+  using exporter::number_text;
+  std::cout << "hlr clip: " << plural(outcome.subjects, "subject polygon", "subject polygons") << ", "
+            << plural(outcome.clips, "clip polygon", "clip polygons") << ", kernel " << kernel_name(job.kernel) << "\n"
+            << "inside: " << plural(outcome.inside.size(), "polygon", "polygons") << ", area "
+            << number_text(outcome.inside_area) << "; outside: " << plural(outcome.outside.size(), "polygon", "polygons")
+            << ", area " << number_text(outcome.outside_area) << "; subject area " << number_text(outcome.subject_area)
+            << " (" << outcome.identity_text << ")\n"
+            << "wrote " << options.output << "\n";
+  std::cout.flush();
+  if (!outcome.identity_holds && job.kernel == KernelKind::exact) {
+    std::cerr << "hlr: " << options.subject << ": internal error: area(inside) + area(outside) != area(subject) for polygon "
+              << outcome.identity_failure << " with the exact kernel (a clipper bug; the result was written for inspection)\n";
+    return kExitContract;
+  }
+  return kExitOk;
 }
 
 }  // namespace

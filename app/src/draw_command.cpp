@@ -2,7 +2,7 @@
 //            options: style_options.hpp] [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "line_runs.hpp"
+#include "line_options.hpp"
 #include "style_options.hpp"
 #include "subcommand.hpp"
 
@@ -19,7 +19,7 @@ namespace {
 struct DrawOptions {
   SceneOptions scene;
   std::vector<std::string> outputs;
-  LineRunSettings lines;
+  exporter::DrawOptions lines;
   StyleOptions style;
   int raster = 0;  // pixels; 0: the exact path (or --kernel)
   std::string dash = "arc";
@@ -51,19 +51,20 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   std::vector<std::unique_ptr<AtomicFile>> files;
   for (const auto& out : options.outputs) files.push_back(std::make_unique<AtomicFile>(out));
 
-  const Scene scene = load_scene(options.scene.meshes);
+  const Scene scene = read_scene(options.scene.meshes);
   const double read = seconds_since(start);
-  LineRunSettings settings = options.lines;
-  settings.progress = scene.input.faces >= 10000;
-  settings.free_at_exit = true;  // the run ends with the outputs
-  const Intersections intersections(scene, settings);
-  RasterRun raster;
+  exporter::DrawOptions job = options.lines;
+  job.kernel = kind;
+  const bool progress = scene.input.faces >= 10000;
+  job.progress = stage_lines(progress);
+  job.free_at_exit = true;  // the run ends with the outputs
+  exporter::RasterRun raster;
   exporter::LineDrawing drawing;
   if (options.raster > 0) {
-    raster = raster_drawing(scene, view, options.raster, intersections, settings);
+    raster = exporter::draw_raster(scene, view, options.raster, job);
     drawing = std::move(raster.drawing);
   } else {
-    drawing = kernel_drawing(options.scene, scene, view, kind, intersections, settings);
+    drawing = exporter::draw_lines(scene, view, job);
   }
   drawing.times.read = read;
   drawing.times.total += read;
@@ -94,7 +95,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   drawing.merge_distance_mm = style.merge_distance;
   drawing.contact_segments = sheet.merged.contact;
   drawing.contact_degrees = style.contact_degrees;
-  if (settings.progress)
+  if (progress)
     std::cerr << "hlr: " << merged << " near-coincident drawing segments merged (within " << style.merge_distance
               << " mm on the sheet)\n";
   for (const bool json : {false, true}) {
@@ -116,7 +117,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   }
   for (auto& file : files) file->commit();
   const double written = write_seconds();
-  if (settings.progress)
+  if (progress)
     std::cerr << "hlr: " << files.size() << (files.size() == 1 ? " output" : " outputs") << " written in " << written
               << " s; " << drawing.times.total + written << " s in all\n";
 

@@ -1,16 +1,15 @@
 // Errors the hlr program reports to its user: one line on stderr, "hlr: FILE: problem", exit 1.
 #pragma once
 
+#include <hlr/kernel/errors.hpp>
+
 #include <stdexcept>
 #include <string>
 
 namespace hlr::app {
 
-// A problem with a file the user named (an input that cannot be read or is not valid, an output
-// that cannot be written). what() is "FILE: problem"; main prints it behind "hlr: ".
-struct UserError : std::runtime_error {
-  UserError(const std::string& file, const std::string& problem) : std::runtime_error(file + ": " + problem) {}
-};
+// A problem with a file the user named; main prints what() behind "hlr: ".
+using hlr::UserError;
 
 // A command line that cannot be carried out, found only once the work has begun (a --scale at
 // which the drawing does not fit its sheet). what() is "OPTION VALUE: problem"; exit 2.

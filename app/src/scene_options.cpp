@@ -58,23 +58,10 @@ std::optional<View> resolve_view(const SceneOptions& options) {
   return view;
 }
 
-Scene load_scene(const std::vector<std::string>& paths) {
-  Scene scene;
-  for (const auto& path : paths) {
-    ImportReport report;
-    scene.meshes.push_back(load_mesh(path, report));
-    for (const auto& w : report.warnings) std::cerr << "hlr: warning: " << w << '\n';
-    scene.input.files.push_back(path);
-    scene.input.faces += scene.meshes.back().faces.size();
-    scene.input.vertices += scene.meshes.back().vertices.size();
-    scene.input.welded_vertices += report.welded_vertices;
-  }
+Scene read_scene(const std::vector<std::string>& paths) {
+  Scene scene = hlr::load_scene(paths);
+  for (const auto& w : scene.warnings) std::cerr << "hlr: warning: " << w << '\n';
   return scene;
-}
-
-UserError inexact_kernel_failure(const SceneOptions& options, KernelKind kind, const std::exception& e) {
-  return UserError(options.meshes.front(), std::string("the ") + kernel_name(kind) + " kernel failed on this view (" +
-                                               e.what() + "); the exact kernel does not");
 }
 
 bool has_extension(const std::string& path, const std::string& extension) {

@@ -4,7 +4,7 @@
 
 #include "errors.hpp"
 
-#include <hlr/export/surfaces.hpp>
+#include <hlr/hidden_line/jobs.hpp>
 #include <hlr/kernel/view.hpp>
 
 #include <CLI/CLI.hpp>
@@ -37,42 +37,12 @@ std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options);
 // The view the options name, or nothing after a one-line usage error on stderr.
 std::optional<View> resolve_view(const SceneOptions& options);
 
-struct Scene {
-  std::vector<Mesh> meshes;
-  exporter::InputInfo input;
-};
-
-// Reads every mesh (throws ImportError) and prints the importer's warnings.
-Scene load_scene(const std::vector<std::string>& paths);
-
-// Calls solve.template operator()<K>(kind) with the kernel type of `kind`.
-template <class Solve>
-decltype(auto) with_kernel(KernelKind kind, Solve&& solve) {
-  switch (kind) {
-    case KernelKind::epick: return solve.template operator()<EpickKernel>(kind);
-    case KernelKind::floating: return solve.template operator()<DoubleKernel>(kind);
-    case KernelKind::exact: break;
-  }
-  return solve.template operator()<ExactKernel>(kind);
-}
-
-// The same, with the kernel the options name.
-template <class Solve>
-int with_kernel(const SceneOptions& options, Solve&& solve) {
-  KernelKind kind = KernelKind::exact;
-  parse_kernel_kind(options.kernel, kind);
-  return with_kernel(kind, std::forward<Solve>(solve));
-}
-
-// The error for a run whose inexact kernel contradicted itself (a ClipError: the exact kernel
-// never throws one on valid input).
-UserError inexact_kernel_failure(const SceneOptions& options, KernelKind kind, const std::exception& e);
+// Reads every mesh (hlr::load_scene: throws ImportError) and prints the importer's warnings.
+Scene read_scene(const std::vector<std::string>& paths);
 
 // Whether a path ends in `extension` (".svg"), in any letter case.
 bool has_extension(const std::string& path, const std::string& extension);
 
-inline double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using hidden_line::seconds_since;
 
 }  // namespace hlr::app

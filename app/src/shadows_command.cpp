@@ -107,19 +107,19 @@ int run(const ShadowsOptions& options) {
   scene_options.threads = options.threads;
   const auto threads = thread_limit(scene_options);
 
-  const auto [meshes, input] = load_scene(options.meshes);
+  const Scene scene = read_scene(options.meshes);
+  const auto& input = scene.input;
   const double read = seconds_since(start);
-  const bool progress = input.faces >= 20000;
-  if (progress)
-    std::cerr << "hlr shadows: " << input.faces << " faces read; " << lights.lights.size() << " light(s)\n";
 
   hidden_line::ShadowOptions shadow_options;
   shadow_options.union_shadows = options.union_shadows;
-  shadow_options.light_views =
-      std::find(formats.begin(), formats.end(), Format::svg) != formats.end();
-  const hidden_line::ShadowResult result = hidden_line::cast_shadows(meshes, lights.lights, shadow_options);
+  shadow_options.light_views = std::find(formats.begin(), formats.end(), Format::svg) != formats.end();
+  // Large scenes take seconds: say what is happening.
+  if (input.faces >= 20000)
+    shadow_options.progress.stage = [](std::string_view what) { std::cerr << "hlr shadows: " << what << '\n'; };
+  const hidden_line::ShadowResult result = hidden_line::cast_shadows(scene, lights.lights, shadow_options);
 
-  const exporter::ShadowsDocument doc{input, meshes, lights.lights, lights.labels, result, read};
+  const exporter::ShadowsDocument doc{input, scene.meshes, lights.lights, lights.labels, result, read};
   for (std::size_t i = 0; i < options.outputs.size(); ++i) {
     AtomicFile file(options.outputs[i]);
     file.write(formats[i] == Format::json  ? exporter::shadows_json(doc)

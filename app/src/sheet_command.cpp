@@ -3,11 +3,11 @@
 //             --date D --revision R] -o OUT.svg|OUT.pdf|OUT.dxf [-o ...]`
 //
 // Several views of one scene on one sheet: each view is drawn exactly as `hlr draw --view NAME`
-// draws it (line_runs.hpp: the same solve, one intersection search for all views), then laid out
+// draws it (exporter::draw_lines: the same job, one intersection search for all views), then laid out
 // by the export library (hlr/export/sheet.hpp) and written in every format asked for.
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "line_runs.hpp"
+#include "line_options.hpp"
 #include "style_options.hpp"
 #include "subcommand.hpp"
 
@@ -26,7 +26,7 @@ struct SheetOptions {
   std::string projection = "third";
   std::string kernel = "exact";
   int threads = 0;
-  LineRunSettings lines;
+  exporter::DrawOptions lines;
   StyleOptions style;
   exporter::SheetFields fields;
 };
@@ -97,18 +97,18 @@ int run(const SheetOptions& options) {
   std::vector<std::unique_ptr<AtomicFile>> files;
   for (const auto& out : options.outputs) files.push_back(std::make_unique<AtomicFile>(out));
 
-  scene_options.meshes = options.meshes;
-  scene_options.kernel = options.kernel;
-  const Scene scene = load_scene(options.meshes);
-  LineRunSettings settings = options.lines;
-  settings.progress = scene.input.faces >= 10000;
-  const Intersections intersections(scene, settings);  // model space: found once, for all views
+  const Scene scene = read_scene(options.meshes);
+  exporter::DrawOptions job = options.lines;
+  job.kernel = kind;
+  const bool progress = scene.input.faces >= 10000;
+  job.progress = stage_lines(progress);
+  const exporter::SceneIntersections intersections(scene, job.intersections, job.progress);  // found once, for all views
   std::vector<exporter::LineDrawing> drawings;
   drawings.reserve(views->size());
   for (std::size_t i = 0; i < views->size(); ++i) {
-    if (settings.progress)
+    if (progress)
       std::cerr << "hlr: view " << (*views)[i].name << " (" << i + 1 << " of " << views->size() << ")\n";
-    drawings.push_back(kernel_drawing(scene_options, scene, (*views)[i], kind, intersections, settings));
+    drawings.push_back(exporter::draw_lines(scene, (*views)[i], job, &intersections));
   }
   const double solved = seconds_since(start);
 

@@ -4,7 +4,7 @@
 #include "scene_options.hpp"
 #include "subcommand.hpp"
 
-#include <hlr/export/surfaces.hpp>
+#include <hlr/export/jobs.hpp>
 
 #include <chrono>
 #include <iostream>
@@ -31,52 +31,36 @@ Format format_of(const std::string& path) {
   throw UserError(path, "unknown output format (the name must end in .json or .svg)");
 }
 
-template <class K>
-int solve(const SurfacesOptions& options, const View& view, KernelKind kind) {
+int solve(const SurfacesOptions& options, const View& view) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<Format> formats;
   for (const auto& out : options.outputs) formats.push_back(format_of(out));
 
-  const auto [meshes, input] = load_scene(options.scene.meshes);
-  exporter::StageTimes times;
-  times.read = seconds_since(start);
+  const Scene scene = read_scene(options.scene.meshes);
+  exporter::SurfacesOptions job;
+  parse_kernel_kind(options.scene.kernel, job.kernel);
+  job.sources.remove_back_faces = !options.keep_back_faces;
+  job.sources.consolidate = !options.no_consolidation;
   // Large scenes take seconds: say what is happening.
-  const bool progress = input.faces >= 20000;
-  if (progress) std::cerr << "hlr surfaces: " << input.faces << " faces read; building polygons\n";
+  if (scene.input.faces >= 20000)
+    job.progress.stage = [](std::string_view what) { std::cerr << "hlr surfaces: " << what << '\n'; };
+  const exporter::SurfacesSolution solution = exporter::solve_surfaces(scene, view, job, seconds_since(start));
 
-  const ViewFrame<K> frame(view);
-  hidden_line::SourceOptions source_options;
-  source_options.remove_back_faces = !options.keep_back_faces;
-  source_options.consolidate = !options.no_consolidation;
-  auto mark = std::chrono::steady_clock::now();
-  hidden_line::Sources<K> sources;
-  hidden_line::VisibilityMap<K> map;
-  try {
-    sources = hidden_line::build_sources<K>(meshes, frame, source_options);
-    times.sources = seconds_since(mark);
-    if (progress) std::cerr << "hlr surfaces: sorting " << sources.polygons.size() << " polygons\n";
-    mark = std::chrono::steady_clock::now();
-    map = hidden_line::area_sort<K>(sources);
-    times.sort = seconds_since(mark);
-  } catch (const clip::ClipError& e) {
-    throw inexact_kernel_failure(options.scene, kind, e);
-  }
-  times.total = seconds_since(start);
-
-  const exporter::SurfacesDocument<K> doc{input, meshes, frame, sources, map, kind, times};
   for (std::size_t i = 0; i < options.outputs.size(); ++i) {
     AtomicFile file(options.outputs[i]);
-    file.write(formats[i] == Format::json ? exporter::surfaces_json(doc, options.exact) : exporter::surfaces_svg(doc));
+    file.write(formats[i] == Format::json ? solution.json(options.exact) : solution.svg());
     file.commit();
   }
-  const auto& st = sources.stats;
-  std::cout << "hlr surfaces: " << input.faces << " faces, view " << view.name << ", kernel " << kernel_name(kind) << '\n'
+  const auto& st = solution.summary().sources;
+  const auto& sort = solution.summary().sort;
+  std::cout << "hlr surfaces: " << scene.input.faces << " faces, view " << view.name << ", kernel "
+            << kernel_name(job.kernel) << '\n'
             << "  " << st.back_faces_removed << " back faces and " << st.edge_on_faces_removed
             << " edge-on faces removed; " << st.faces_consolidated << " faces consolidated; " << st.sources
             << " polygons sorted\n"
-            << "  " << map.visible.size() << " visible and " << map.hidden.size() << " hidden polygons ("
-            << map.stats.penetration_splits << " penetration splits, " << map.stats.coplanar_ties
-            << " coplanar ties) in " << times.total << " s\n";
+            << "  " << solution.summary().visible << " visible and " << solution.summary().hidden << " hidden polygons ("
+            << sort.penetration_splits << " penetration splits, " << sort.coplanar_ties << " coplanar ties) in "
+            << solution.times().total << " s\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
   return kExitOk;
 }
@@ -85,7 +69,7 @@ int run(const SurfacesOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
   const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
-  return with_kernel(options.scene, [&]<class K>(KernelKind kind) { return solve<K>(options, *view, kind); });
+  return solve(options, *view);
 }
 
 }  // namespace

@@ -32,8 +32,6 @@ using FT = ShadowFT;
 using P2 = G::Point;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
 using Vec3FT = std::array<FT, 3>;
 
 // Newell's normal of a face, exact: twice its area times the unit normal of its winding.
@@ -229,8 +227,8 @@ View light_view_of(const Light& light) {
 class LightSolver {
  public:
   LightSolver(const std::vector<Mesh>& meshes, ModelSources& model, ShadowResult& result, std::size_t light_index,
-              const ShadowOptions& options)
-      : meshes_(meshes), model_(model), result_(result), k_(light_index), options_(options) {}
+              std::size_t light_count, const ShadowOptions& options)
+      : meshes_(meshes), model_(model), result_(result), k_(light_index), light_count_(light_count), options_(options) {}
 
   void run(const Light& light) {
     const View view = light_view_of(light);
@@ -246,17 +244,24 @@ class LightSolver {
       inverse_[2][i] = Z[i] / nz;
     }
 
+    const std::string name = "light " + std::to_string(k_ + 1) + " of " + std::to_string(light_count_);
+    options_.progress.check();
+    options_.progress.report(name + ": light view");
     auto mark = Clock::now();
     SourceOptions source_options;
     source_options.remove_back_faces = true;
     source_options.consolidate = true;
     sources_ = build_sources<K>(meshes_, frame, source_options);
     result_.times.views += seconds_since(mark);
+    options_.progress.check();
+    options_.progress.report(name + ": sorting " + std::to_string(sources_.polygons.size()) + " polygons");
     mark = Clock::now();
     AreaSortOptions sort_options = options_.sort;
     sort_options.keep_hidden = true;
     const VisibilityMap<K> map = area_sort<K>(sources_, sort_options);
     result_.times.sort += seconds_since(mark);
+    options_.progress.check();
+    options_.progress.report(name + ": lit and shadow polygons");
     mark = Clock::now();
 
     // Facing of every model source, and its slot for this light.
@@ -512,7 +517,7 @@ class LightSolver {
   const std::vector<Mesh>& meshes_;
   ModelSources& model_;
   ShadowResult& result_;
-  std::size_t k_;
+  std::size_t k_, light_count_;
   const ShadowOptions& options_;
   FT inverse_[3][3];
   Sources<K> sources_;
@@ -546,13 +551,14 @@ ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Lig
     if (auto defect = light_defect(light)) throw std::invalid_argument(*defect);
   const auto start = Clock::now();
   ShadowResult result;
+  options.progress.report("sources of " + std::to_string(meshes.size()) + " mesh(es)");
   ModelSources model = model_sources(meshes);
   result.times.sources = seconds_since(start);
 
   // Per light, per mesh, per face: the lit polygons in the face's source's axis plane.
   std::vector<std::vector<std::vector<std::vector<clip::Polygon<K>>>>> lit_uv;
   for (std::size_t k = 0; k < lights.size(); ++k) {
-    LightSolver solver(meshes, model, result, k, options);
+    LightSolver solver(meshes, model, result, k, lights.size(), options);
     solver.run(lights[k]);
     if (options.union_shadows) lit_uv.push_back(std::move(solver.face_lit_uv));
   }
@@ -560,6 +566,8 @@ ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Lig
   if (options.union_shadows) {
     // The shadow over all lights is the face minus what every light reaches: intersect the lit
     // regions light by light, in the face's axis plane.
+    options.progress.check();
+    options.progress.report("union of the shadows");
     const auto mark = Clock::now();
     for (std::uint32_t mi = 0; mi < meshes.size(); ++mi) {
       const std::size_t nf = meshes[mi].faces.size();
@@ -609,6 +617,10 @@ ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Lig
   result.face_area2 = std::move(model.face_area2);
   result.times.total = seconds_since(start);
   return result;
+}
+
+ShadowResult cast_shadows(const Scene& scene, const std::vector<Light>& lights, const ShadowOptions& options) {
+  return cast_shadows(scene.meshes, lights, options);
 }
 
 }  // namespace hlr::hidden_line

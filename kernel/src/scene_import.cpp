@@ -287,4 +287,31 @@ Mesh load_mesh(const std::string& path, ImportReport& report) {
   return finish(path, std::move(raw), report);
 }
 
+Mesh make_mesh(const std::string& name, std::vector<std::array<double, 3>> vertices,
+               std::vector<std::vector<std::uint32_t>> faces, ImportReport& report) {
+  RawMesh raw;
+  raw.vertices = std::move(vertices);
+  raw.faces = std::move(faces);
+  return finish(name, std::move(raw), report);
+}
+
+void Scene::add(Mesh mesh, const ImportReport& report) {
+  input.files.push_back(mesh.file);
+  input.faces += mesh.faces.size();
+  input.vertices += mesh.vertices.size();
+  input.welded_vertices += report.welded_vertices;
+  warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+  meshes.push_back(std::move(mesh));
+}
+
+Scene load_scene(const std::vector<std::string>& paths) {
+  Scene scene;
+  for (const auto& path : paths) {
+    ImportReport report;
+    Mesh mesh = load_mesh(path, report);
+    scene.add(std::move(mesh), report);
+  }
+  return scene;
+}
+
 }  // namespace hlr

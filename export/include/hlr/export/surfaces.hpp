@@ -10,18 +10,14 @@
 // Writers return the document; the caller writes it to disk (atomically).
 #pragma once
 
-#include <hlr/hidden_line/visibility.hpp>
+#include <hlr/hidden_line/jobs.hpp>
 
 #include <string>
 #include <vector>
 
 namespace hlr::exporter {
 
-struct InputInfo {
-  std::vector<std::string> files;
-  std::size_t faces = 0, vertices = 0;
-  std::size_t welded_vertices = 0;  // stats: vertices import replaced by an equal earlier one
-};
+using hlr::InputInfo;
 
 // The view as the documents write it: the orthonormal frame in double.
 struct ViewInfo {
@@ -35,14 +31,7 @@ ViewInfo view_info(const ViewFrame<K>& frame) {
   return {v.name, v.direction, v.up, frame.world_to_view()};
 }
 
-// Seconds per stage, reported in "stats".
-struct StageTimes {
-  double read = 0, sources = 0, sort = 0, total = 0;     // total: reading and solving, every stage but `write`
-  double intersections = 0, lines = 0, precedence = 0;  // hlr draw: penetrations, classification, ISO 128 precedence
-  // hlr draw: the output stage, from the end of precedence to the finished JSON document (rounding
-  // the exact drawing, the sheet lines, the SVG, DXF and PNG, the JSON itself); see lines_json.
-  double write = 0;
-};
+using hidden_line::StageTimes;
 
 template <class K>
 struct SurfacesDocument {

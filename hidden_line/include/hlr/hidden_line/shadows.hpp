@@ -27,6 +27,7 @@
 // rounded for output (the *_area doubles, LightView).
 #pragma once
 
+#include <hlr/hidden_line/jobs.hpp>
 #include <hlr/hidden_line/visibility.hpp>
 
 #include <array>
@@ -116,6 +117,9 @@ struct ShadowOptions {
   // Also the union of every face's shadows over all lights (a sun study's "shadow over the day"):
   // ShadowResult::face_union_shadow_area.
   bool union_shadows = false;
+  // A stage line per light ("light 2 of 7: sorting 1200 polygons"); cancellation is checked
+  // between the stages of every light (throws hlr::Cancelled).
+  Progress progress;
 };
 
 struct ShadowResult {
@@ -134,7 +138,9 @@ struct ShadowResult {
   ShadowTimes times;
 };
 
-// Solves every light on its own. Throws std::invalid_argument for a light with a defect.
+// The library's entry point for shadows (as hidden_line/jobs.hpp's for a view): solves every
+// light on its own. Throws std::invalid_argument for a light with a defect, and Cancelled.
+ShadowResult cast_shadows(const Scene& scene, const std::vector<Light>& lights, const ShadowOptions& options = {});
 ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Light>& lights,
                           const ShadowOptions& options = {});
 

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 namespace hlr {
 
@@ -50,6 +51,26 @@ inline const char* kernel_name(KernelKind kind) {
     case KernelKind::floating: return "double";
   }
   return "?";
+}
+
+// Calls solve.template operator()<K>(kind) with the kernel type of `kind`: the one place where a
+// run-time kernel choice becomes a type.
+template <class Solve>
+decltype(auto) with_kernel(KernelKind kind, Solve&& solve) {
+  switch (kind) {
+    case KernelKind::epick: return solve.template operator()<EpickKernel>(kind);
+    case KernelKind::floating: return solve.template operator()<DoubleKernel>(kind);
+    case KernelKind::exact: break;
+  }
+  return solve.template operator()<ExactKernel>(kind);
+}
+
+// The kind of kernel type K.
+template <class K>
+constexpr KernelKind kernel_kind_of() {
+  if constexpr (std::is_same_v<K, ExactKernel>) return KernelKind::exact;
+  else if constexpr (std::is_same_v<K, EpickKernel>) return KernelKind::epick;
+  else return KernelKind::floating;
 }
 
 // An exact number written without rounding: "p/q", or "p" when q = 1.

@@ -55,7 +55,7 @@
 
 namespace hlr {
 
-// Coordinates beyond this magnitude are rejected, as in the clipper's input (app/polygon_json):
+// Coordinates beyond this magnitude are rejected, as in the clipper's input (export/polygons.hpp):
 // the inexact kernels evaluate products of coordinates (degree 3 and more in 3D) in double, and
 // those must not overflow.
 inline constexpr double kMaxImportCoordinate = 1e100;
@@ -88,5 +88,28 @@ struct ImportError : std::runtime_error {
 
 // Reads FILE by its extension (.off, .obj, .stl, .ply; any letter case). Throws ImportError.
 Mesh load_mesh(const std::string& path, ImportReport& report);
+
+// The same checks and face preparation for a mesh given as arrays (a program's own data): `name`
+// stands for the file in messages and in Mesh::file. Throws ImportError.
+Mesh make_mesh(const std::string& name, std::vector<std::array<double, 3>> vertices,
+               std::vector<std::vector<std::uint32_t>> faces, ImportReport& report);
+
+// What the documents say about a scene's input.
+struct InputInfo {
+  std::vector<std::string> files;
+  std::size_t faces = 0, vertices = 0;
+  std::size_t welded_vertices = 0;  // stats: vertices import replaced by an equal earlier one
+};
+
+// The meshes of one drawing, and what was read.
+struct Scene {
+  std::vector<Mesh> meshes;
+  InputInfo input;
+  std::vector<std::string> warnings;  // the importer's, one line each ("FILE: ...")
+  void add(Mesh mesh, const ImportReport& report);
+};
+
+// Reads every file (load_mesh) into one scene. Throws ImportError.
+Scene load_scene(const std::vector<std::string>& paths);
 
 }  // namespace hlr

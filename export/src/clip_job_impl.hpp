@@ -1,40 +1,25 @@
-// The template behind run_clip_<kernel> (clip_run.hpp). Included only by clip_run_<kernel>.cpp.
+// The template behind clip_polygons (polygons.hpp), once per kernel in clip_job_<kernel>.cpp.
 //
-// The app only converts and reports: every geometric decision (validity, orientation, clipping,
-// areas) is the clipper's, made in the kernel's arithmetic.
+// Every geometric decision (validity, orientation, clipping, areas) is the clipper's, made in the
+// kernel's arithmetic; the outcome is rounded once at the end.
 #pragma once
 
-#include "atomic_file.hpp"
-#include "clip_run.hpp"
-#include "errors.hpp"
-
 #include <hlr/clipper/clipper.hpp>
+#include <hlr/export/polygons.hpp>
+#include <hlr/kernel/errors.hpp>
 #include <hlr/kernel/kernel.hpp>
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <iostream>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
 
-namespace hlr::app::clip_detail {
-
-// Where an input edge came from: edge `edge` (input vertex edge -> edge + 1, in the input's own
-// order and numbering) of contour `contour` (0 = outer, h + 1 = hole h) of polygon `polygon` of the
-// subject or the clip file.
-struct EdgeSource {
-  const char* role = nullptr;  // "subject" | "clip"; nullptr: the line is not an input edge
-  std::uint32_t polygon = 0, contour = 0, edge = 0;
-};
+namespace hlr::exporter::clip_detail {
 
 // A piece of the result and where it came from.
 template <class K>
@@ -43,21 +28,6 @@ struct Piece {
   std::uint32_t subject = 0;  // index of the subject polygon it is part of
   std::int64_t clip = -1;     // inside pieces: index of the clip polygon it is inside of
 };
-
-inline std::string plural(std::size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-// The shortest text that reads back as the same double; plain decimals for everyday magnitudes
-// ("100000", not "1e+05").
-inline std::string number_text(double v) {
-  char buffer[512];
-  const double a = std::fabs(v);
-  auto result = (a == 0 || (a >= 1e-6 && a < 1e16))
-                    ? std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::fixed)
-                    : std::to_chars(buffer, buffer + sizeof buffer, v);
-  return std::string(buffer, result.ptr);
-}
 
 // FT's exact number type when it is a lazy number, else FT itself.
 template <class FT, bool lazy>
@@ -76,43 +46,22 @@ class ClipRun {
   using FT = typename G::FT;
   using Point = typename G::Point;
 
-  ClipRun(const ClipJob& job, const char* kernel) : job_(job), kernel_(kernel) {}
+  ClipRun(const std::vector<RawPolygon>& subjects, const std::vector<RawPolygon>& clips, const ClipOptions& options)
+      : raw_subjects_(subjects), raw_clips_(clips), options_(options), kernel_(kernel_name(options.kernel)) {}
 
-  int run() {
+  ClipOutcome run() {
     // Every input edge becomes a line of one shared table; the table is complete before the clip
     // regions are built (they keep a reference to it).
-    for (std::size_t p = 0; p < job_.subjects.size(); ++p)
-      subjects_.push_back(build_polygon(job_.subjects[p], "subject", p, job_.subject_path));
-    for (std::size_t p = 0; p < job_.clips.size(); ++p)
-      clips_.push_back(build_polygon(job_.clips[p], "clip", p, job_.clip_path));
-
-    // Fail early on an output that cannot be written, before the clipping work.
-    AtomicFile output(job_.output_path);
+    for (std::size_t p = 0; p < raw_subjects_.size(); ++p)
+      subjects_.push_back(build_polygon(raw_subjects_[p], "subject", p, options_.subject_name));
+    for (std::size_t p = 0; p < raw_clips_.size(); ++p)
+      clips_.push_back(build_polygon(raw_clips_[p], "clip", p, options_.clip_name));
 
     auto start = std::chrono::steady_clock::now();
     clip_all();
-    seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     check_areas();
-    output.write(document());
-    output.commit();
-
-    std::ostream& out = *job_.summary;
-    out << "hlr clip: " << plural(subjects_.size(), "subject polygon", "subject polygons") << ", "
-        << plural(clips_.size(), "clip polygon", "clip polygons") << ", kernel " << kernel_ << "\n";
-    out << "inside: " << plural(inside_.size(), "polygon", "polygons") << ", area " << area_text(inside_area_)
-        << "; outside: " << plural(outside_.size(), "polygon", "polygons") << ", area "
-        << area_text(outside_area_) << "; subject area " << area_text(subject_area_) << " (" << identity_text()
-        << ")\n";
-    out << "wrote " << job_.output_path << "\n";
-    out.flush();
-
-    if (!identity_holds_ && G::exact_constructions) {
-      std::cerr << "hlr: " << job_.subject_path << ": internal error: area(inside) + area(outside) != area(subject) for polygon "
-                << identity_failure_ << " with the exact kernel (a clipper bug; the result was written for inspection)\n";
-      return kExitContract;
-    }
-    return kExitOk;
+    return outcome(seconds);
   }
 
  private:
@@ -164,11 +113,11 @@ class ClipRun {
   }
 
   [[noreturn]] void clip_failed(std::size_t subject, std::size_t clip, const std::exception& e) const {
-    std::string problem = "polygon " + std::to_string(subject) + ": clipping by " + job_.clip_path + " polygon " +
+    std::string problem = "polygon " + std::to_string(subject) + ": clipping by " + options_.clip_name + " polygon " +
                           std::to_string(clip) + " failed with kernel " + kernel_ + ": " + e.what();
     if (G::exact_constructions) problem += " (the exact kernel should never fail on valid input: a clipper bug)";
     else problem += " (try --kernel exact)";
-    throw UserError(job_.subject_path, problem);
+    throw UserError(options_.subject_name, problem);
   }
 
   // Each subject is clipped on its own. The clip region is the union of the clip polygons, taken
@@ -277,98 +226,80 @@ class ClipRun {
     return "identity off by " + number_text(discrepancy_) + " in " + kernel_ + " arithmetic";
   }
 
-  static std::string area_text(const FT& v) { return number_text(G::to_double(v)); }
-
-  // ---- hlr-clip/1 -----------------------------------------------------------------------------
+  // ---- the outcome, rounded once -------------------------------------------------------------
 
   double coordinate(const FT& v) const {
     double d = G::to_double(v);
     if (!std::isfinite(d))
-      throw UserError(job_.subject_path, std::string("kernel ") + kernel_ +
-                                             " produced a non-finite coordinate in the result (try --kernel exact)");
+      throw UserError(options_.subject_name, std::string("kernel ") + kernel_ +
+                                                 " produced a non-finite coordinate in the result (try --kernel exact)");
     return d;
   }
 
-  nlohmann::json points_json(const clip::Contour<K>& contour) const {
-    nlohmann::json a = nlohmann::json::array();
-    for (const auto& p : contour.points) a.push_back({coordinate(G::x(p)), coordinate(G::y(p))});
-    return a;
-  }
-
-  nlohmann::json exact_json(const clip::Contour<K>& contour) const {
-    nlohmann::json a = nlohmann::json::array();
-    for (const auto& p : contour.points) a.push_back({G::exact_string(G::x(p)), G::exact_string(G::y(p))});
-    return a;
-  }
-
-  nlohmann::json edges_json(const clip::Contour<K>& contour) const {
-    nlohmann::json a = nlohmann::json::array();
-    for (clip::LineId id : contour.lines) {
-      if (id >= sources_.size() || sources_[id].role == nullptr)
-        throw std::logic_error("output edge lies on line " + std::to_string(id) + ", which is not an input edge");
-      const EdgeSource& s = sources_[id];
-      a.push_back({s.role, s.polygon, s.contour, s.edge});
-    }
-    return a;
-  }
-
-  template <class F>
-  nlohmann::json holes_json(const clip::Polygon<K>& polygon, F&& contour_json) const {
-    nlohmann::json a = nlohmann::json::array();
-    for (const auto& hole : polygon.holes) a.push_back(contour_json(hole));
-    return a;
-  }
-
-  void write_piece(std::string& out, const Piece<K>& piece) const {
-    const auto& poly = piece.polygon;
-    out += "    {\"subject\": " + std::to_string(piece.subject);
-    if (piece.clip >= 0) out += ", \"clip\": " + std::to_string(piece.clip);
-    out += ",\n     \"outer\": " + points_json(poly.outer).dump();
-    out += ",\n     \"holes\": " + holes_json(poly, [&](const auto& c) { return points_json(c); }).dump();
-    out += ",\n     \"outer_edges\": " + edges_json(poly.outer).dump();
-    out += ",\n     \"holes_edges\": " + holes_json(poly, [&](const auto& c) { return edges_json(c); }).dump();
-    if (job_.exact_output) {
-      out += ",\n     \"outer_exact\": " + exact_json(poly.outer).dump();
-      out += ",\n     \"holes_exact\": " + holes_json(poly, [&](const auto& c) { return exact_json(c); }).dump();
-    }
-    out += "}";
-  }
-
-  void write_list(std::string& out, const char* name, const std::vector<Piece<K>>& pieces) const {
-    out += std::string("  \"") + name + "\": [";
-    for (std::size_t i = 0; i < pieces.size(); ++i) {
-      out += i == 0 ? "\n" : ",\n";
-      write_piece(out, pieces[i]);
-    }
-    out += pieces.empty() ? "],\n" : "\n  ],\n";
-  }
-
-  std::string document() const {
-    std::string out;
-    out += "{\n  \"format\": \"hlr-clip/1\",\n";
-    out += std::string("  \"kernel\": \"") + kernel_ + "\",\n";
-    write_list(out, "inside", inside_);
-    write_list(out, "outside", outside_);
-    nlohmann::ordered_json stats;
-    stats["subject_polygons"] = subjects_.size();
-    stats["clip_polygons"] = clips_.size();
-    stats["inside_polygons"] = inside_.size();
-    stats["outside_polygons"] = outside_.size();
-    stats["subject_area"] = G::to_double(subject_area_);
-    stats["inside_area"] = G::to_double(inside_area_);
-    stats["outside_area"] = G::to_double(outside_area_);
-    if (job_.exact_output) {
-      stats["subject_area_exact"] = G::exact_string(subject_area_);
-      stats["inside_area_exact"] = G::exact_string(inside_area_);
-      stats["outside_area_exact"] = G::exact_string(outside_area_);
-    }
-    stats["area_identity"] = identity_holds_;
-    stats["seconds"] = seconds_;
-    out += "  \"stats\": " + stats.dump() + "\n}\n";
+  RawContour rounded(const clip::Contour<K>& contour) const {
+    RawContour out;
+    out.reserve(contour.points.size());
+    for (const auto& p : contour.points) out.push_back({coordinate(G::x(p)), coordinate(G::y(p))});
     return out;
   }
 
-  const ClipJob& job_;
+  std::vector<ExactPoint2Text> exact_text(const clip::Contour<K>& contour) const {
+    std::vector<ExactPoint2Text> out;
+    for (const auto& p : contour.points) out.push_back({G::exact_string(G::x(p)), G::exact_string(G::y(p))});
+    return out;
+  }
+
+  std::vector<EdgeSource> edges(const clip::Contour<K>& contour) const {
+    std::vector<EdgeSource> out;
+    for (clip::LineId id : contour.lines) {
+      if (id >= sources_.size() || sources_[id].role == nullptr)
+        throw std::logic_error("output edge lies on line " + std::to_string(id) + ", which is not an input edge");
+      out.push_back(sources_[id]);
+    }
+    return out;
+  }
+
+  ClipPiece rounded(const Piece<K>& piece) const {
+    ClipPiece out;
+    out.subject = piece.subject;
+    out.clip = piece.clip;
+    out.polygon.outer = rounded(piece.polygon.outer);
+    out.outer_edges = edges(piece.polygon.outer);
+    if (options_.exact_values) out.outer_exact = exact_text(piece.polygon.outer);
+    for (const auto& hole : piece.polygon.holes) {
+      out.polygon.holes.push_back(rounded(hole));
+      out.hole_edges.push_back(edges(hole));
+      if (options_.exact_values) out.holes_exact.push_back(exact_text(hole));
+    }
+    return out;
+  }
+
+  ClipOutcome outcome(double seconds) const {
+    ClipOutcome out;
+    out.kernel = options_.kernel;
+    out.exact_values = options_.exact_values;
+    out.subjects = subjects_.size();
+    out.clips = clips_.size();
+    for (const auto& piece : inside_) out.inside.push_back(rounded(piece));
+    for (const auto& piece : outside_) out.outside.push_back(rounded(piece));
+    out.subject_area = G::to_double(subject_area_);
+    out.inside_area = G::to_double(inside_area_);
+    out.outside_area = G::to_double(outside_area_);
+    if (options_.exact_values) {
+      out.subject_area_exact = G::exact_string(subject_area_);
+      out.inside_area_exact = G::exact_string(inside_area_);
+      out.outside_area_exact = G::exact_string(outside_area_);
+    }
+    out.identity_holds = identity_holds_;
+    out.identity_failure = identity_failure_;
+    out.identity_text = identity_text();
+    out.seconds = seconds;
+    return out;
+  }
+
+  const std::vector<RawPolygon>& raw_subjects_;
+  const std::vector<RawPolygon>& raw_clips_;
+  const ClipOptions& options_;
   const char* kernel_;
   clip::LineTable<K> lines_;
   std::vector<EdgeSource> sources_;  // indexed by LineId
@@ -378,7 +309,12 @@ class ClipRun {
   double discrepancy_ = 0;
   bool identity_holds_ = true;
   std::size_t identity_failure_ = 0;
-  double seconds_ = 0;
 };
 
-}  // namespace hlr::app::clip_detail
+}  // namespace hlr::exporter::clip_detail
+
+namespace hlr::exporter {
+ClipOutcome clip_polygons_exact(const std::vector<RawPolygon>&, const std::vector<RawPolygon>&, const ClipOptions&);
+ClipOutcome clip_polygons_epick(const std::vector<RawPolygon>&, const std::vector<RawPolygon>&, const ClipOptions&);
+ClipOutcome clip_polygons_double(const std::vector<RawPolygon>&, const std::vector<RawPolygon>&, const ClipOptions&);
+}  // namespace hlr::exporter

@@ -1,6 +1,5 @@
-#include "polygon_json.hpp"
-
-#include "errors.hpp"
+#include <hlr/export/polygons.hpp>
+#include <hlr/kernel/errors.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -15,7 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace hlr::app {
+namespace hlr::exporter {
 namespace {
 
 using nlohmann::json;
@@ -243,4 +242,4 @@ std::vector<RawPolygon> parse_polygons(const std::string& text, const std::strin
   return Reader(path).document(doc);
 }
 
-}  // namespace hlr::app
+}  // namespace hlr::exporter

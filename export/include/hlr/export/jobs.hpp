@@ -1,0 +1,85 @@
+// hlr export, jobs: the library's entry points, one call per job, as the hlr program runs them.
+//
+//   draw_lines      the line drawing of a view by a kernel (exact by default): sources, area
+//                   sort, line classification, ISO 128 precedence, and the one rounding
+//                   (make_drawing). The result's `times` has every stage.
+//   draw_raster     the same drawing by the raster path (a Z-buffer of N pixels), for images
+//                   and for cross-checks.
+//   solve_surfaces  the hidden-surface solution of a view, as the documents of `hlr surfaces`.
+//   clip_polygons   (polygons.hpp) the clipper on plain polygons.
+//
+// Writers (lines.hpp, surfaces.hpp, sheet.hpp) turn the results into documents; the caller
+// writes the files. Jobs throw hlr::UserError for input they cannot use, hlr::Cancelled when the
+// options' Progress asks them to stop.
+#pragma once
+
+#include <hlr/export/lines.hpp>
+#include <hlr/export/surfaces.hpp>
+#include <hlr/hidden_line/jobs.hpp>
+
+#include <memory>
+#include <string>
+
+namespace hlr::exporter {
+
+using hidden_line::Progress;
+using hidden_line::SceneIntersections;
+
+struct DrawOptions {
+  KernelKind kernel = KernelKind::exact;
+  double crease = 30;          // degrees: an edge is a crease when its faces meet at more than this
+  bool intersections = true;   // lines where faces penetrate
+  // Leave the exact solution (polygons, visibility map, lines, drawing segments) to the process's
+  // exit instead of freeing it once the drawing is rounded: for a program that writes its outputs
+  // and exits. Freeing millions of lazy exact numbers one by one took 2.9 s of a 46 s run on 300k
+  // faces; the operating system takes the memory back at once.
+  bool free_at_exit = false;
+  Progress progress;
+};
+
+// `intersections`: the scene's penetration lines, shared by several views of it (the scene's own
+// are found otherwise); they must have been made with options.intersections.
+LineDrawing draw_lines(const Scene& scene, const View& view, const DrawOptions& options = {},
+                       const SceneIntersections* intersections = nullptr);
+
+// The raster path's drawing, and the RasterDrawing for images of it (png_document(pbuffer())).
+struct RasterRun {
+  std::unique_ptr<hidden_line::RasterDrawing> raster;
+  LineDrawing drawing;
+};
+RasterRun draw_raster(const Scene& scene, const View& view, int resolution, const DrawOptions& options = {},
+                      const SceneIntersections* intersections = nullptr);
+
+struct SurfacesOptions {
+  KernelKind kernel = KernelKind::exact;
+  hidden_line::SourceOptions sources;
+  Progress progress;
+};
+
+// The solution of one view with its documents. It refers to the scene it was solved from, which
+// must outlive it.
+class SurfacesSolution {
+ public:
+  struct Summary {
+    hidden_line::SourceStats sources;
+    hidden_line::AreaSortStats sort;
+    std::size_t visible = 0, hidden = 0;  // polygons
+  };
+  std::string json(bool exact) const;  // hlr-surfaces/1; `exact` adds the "p/q" values
+  std::string svg() const;
+  const Summary& summary() const;
+  const StageTimes& times() const;
+  KernelKind kernel() const;
+
+  struct Impl;
+  explicit SurfacesSolution(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+
+ private:
+  std::shared_ptr<const Impl> impl_;
+};
+
+// times.read is the caller's to set (the solution's times() come without it).
+SurfacesSolution solve_surfaces(const Scene& scene, const View& view, const SurfacesOptions& options = {},
+                                double read_seconds = 0);
+
+}  // namespace hlr::exporter

@@ -1,0 +1,197 @@
+// The line and surface jobs (jobs.hpp), for each kernel. The stages are instantiated in the
+// modules' instantiate_<kernel>.cpp files: this file only chains them.
+#include <hlr/export/jobs.hpp>
+
+#include <tbb/global_control.h>
+#include <tbb/task_group.h>
+
+#include <optional>
+
+namespace hlr::exporter {
+namespace {
+
+hidden_line::LineOptions line_options(const DrawOptions& options) {
+  hidden_line::LineOptions lines;
+  lines.features.crease_degrees = options.crease;
+  lines.intersections = options.intersections;
+  return lines;
+}
+
+// The exact solution of a view: what the drawing is rounded from.
+template <class K>
+struct Solution {
+  hidden_line::Sources<K> sources;
+  hidden_line::VisibilityMap<K> map;
+  hidden_line::LineSet<K> lines;
+  std::vector<hidden_line::DrawnSegment<K>> segments;
+};
+
+template <class K>
+LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections& intersections,
+                  const DrawOptions& options) {
+  using hidden_line::seconds_since;
+  const Progress& progress = options.progress;
+  const ViewFrame<K> frame(view);
+  StageTimes times;
+  auto solution = std::make_unique<Solution<K>>();
+  const auto begin = std::chrono::steady_clock::now();
+  const bool found_before = intersections.found();
+  // Beside the polygon stages when a second thread is free. Otherwise first: on a small scene,
+  // starting the scheduler would take longer than they do, and with one thread, found first they
+  // are found on a fresh heap (at 1M faces, after the sort they took twice as long).
+  constexpr std::size_t kFacesBeside = 2000;
+  const bool second_thread = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1;
+  std::optional<tbb::task_group> beside;
+  if (second_thread && scene.input.faces >= kFacesBeside) beside.emplace().run([&] { intersections.segments(); });
+  else intersections.segments();
+  // A stop asked for while the intersections are found beside waits for them: the task group
+  // must not be destroyed while its task runs.
+  auto check = [&] {
+    if (progress.cancelled && progress.cancelled()) {
+      if (beside) beside->wait();
+      throw Cancelled();
+    }
+  };
+  check();
+  auto mark = std::chrono::steady_clock::now();
+  progress.report(std::to_string(scene.input.faces) + " faces; building polygons (" +
+                  kernel_name(kernel_kind_of<K>()) + ")");
+  solution->sources = hidden_line::build_sources<K>(scene.meshes, frame);
+  times.sources = seconds_since(mark);
+  check();
+  progress.report("sorting " + std::to_string(solution->sources.polygons.size()) + " polygons");
+  mark = std::chrono::steady_clock::now();
+  // A drawing needs only the visible polygons: what the front pieces hide is not kept.
+  solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false});
+  times.sort = seconds_since(mark);
+  if (beside) beside->wait();
+  times.intersections = intersections.seconds();
+  check();
+  progress.report("classifying feature lines");
+  mark = std::chrono::steady_clock::now();
+  solution->lines = hidden_line::classify_lines<K>(scene.meshes, frame, solution->sources, solution->map,
+                                                   intersections.segments(), line_options(options));
+  times.lines = seconds_since(mark);
+  check();
+  mark = std::chrono::steady_clock::now();
+  solution->segments = hidden_line::drawing_segments<K>(solution->lines);
+  times.precedence = seconds_since(mark);
+  // The stages' own times overlap where the intersections were found beside the polygons.
+  times.total = seconds_since(begin) + (found_before ? times.intersections : 0);
+
+  // The output stage starts here: the one rounding of the exact result, then the exact solution
+  // freed (or left to the process's exit: see DrawOptions::free_at_exit).
+  mark = std::chrono::steady_clock::now();
+  LineDrawing drawing = make_drawing<K>(scene.input, frame, kernel_kind_of<K>(), solution->lines, solution->segments);
+  if (options.free_at_exit) (void)solution.release();  // not a leak: see DrawOptions::free_at_exit
+  else solution.reset();
+  times.write = seconds_since(mark);
+  drawing.crease_degrees = options.crease;
+  drawing.times = times;
+  return drawing;
+}
+
+// `shared`, or the scene's own intersections in `own`.
+const SceneIntersections& intersections_of(const Scene& scene, const DrawOptions& options,
+                                           const SceneIntersections* shared, std::optional<SceneIntersections>& own) {
+  if (shared) return *shared;
+  return own.emplace(scene, options.intersections, options.progress);
+}
+
+}  // namespace
+
+LineDrawing draw_lines(const Scene& scene, const View& view, const DrawOptions& options,
+                       const SceneIntersections* shared) {
+  std::optional<SceneIntersections> own;
+  const SceneIntersections& intersections = intersections_of(scene, options, shared, own);
+  try {
+    return with_kernel(options.kernel,
+                       [&]<class K>(KernelKind) { return solve<K>(scene, view, intersections, options); });
+  } catch (const clip::ClipError& e) {
+    if (options.kernel == KernelKind::exact) throw;
+    throw hidden_line::inexact_kernel_failure(scene, options.kernel, e);
+  }
+}
+
+RasterRun draw_raster(const Scene& scene, const View& view, int resolution, const DrawOptions& options,
+                      const SceneIntersections* shared) {
+  using hidden_line::seconds_since;
+  std::optional<SceneIntersections> own;
+  const SceneIntersections& intersections = intersections_of(scene, options, shared, own);
+  RasterRun run;
+  StageTimes times;
+  times.intersections = intersections.seconds();
+  options.progress.check();
+  options.progress.report("Z-buffer at " + std::to_string(resolution) + " pixels");
+  auto mark = std::chrono::steady_clock::now();
+  hidden_line::RasterOptions raster;
+  raster.resolution = resolution;
+  run.raster = std::make_unique<hidden_line::RasterDrawing>(scene.meshes, view, intersections.segments(),
+                                                            line_options(options), raster);
+  const double zbuffer = seconds_since(mark);
+  options.progress.check();
+  mark = std::chrono::steady_clock::now();
+  const hidden_line::LineSet<DoubleKernel> lines = run.raster->classify();
+  times.lines = seconds_since(mark);
+  times.total = times.intersections + zbuffer + times.lines;
+  mark = std::chrono::steady_clock::now();
+  run.drawing = make_raster_drawing(scene.input, *run.raster, lines, resolution);
+  times.write = seconds_since(mark);
+  run.drawing.crease_degrees = options.crease;
+  run.drawing.times = times;
+  run.drawing.zbuffer_seconds = zbuffer;
+  return run;
+}
+
+// ---- surfaces -------------------------------------------------------------------------------
+
+struct SurfacesSolution::Impl {
+  virtual ~Impl() = default;
+  virtual std::string json(bool exact) const = 0;
+  virtual std::string svg() const = 0;
+  Summary summary;
+  StageTimes times;
+  KernelKind kernel = KernelKind::exact;
+};
+
+namespace {
+
+template <class K>
+struct SurfacesImpl final : SurfacesSolution::Impl {
+  SurfacesImpl(const Scene& scene, hidden_line::ViewSolution<K> solved) : scene(scene), solution(std::move(solved)) {}
+  SurfacesDocument<K> document() const {
+    return {scene.input, scene.meshes, solution.frame, solution.sources, solution.map, kernel, times};
+  }
+  std::string json(bool exact) const override { return surfaces_json(document(), exact); }
+  std::string svg() const override { return surfaces_svg(document()); }
+  const Scene& scene;
+  hidden_line::ViewSolution<K> solution;
+};
+
+}  // namespace
+
+std::string SurfacesSolution::json(bool exact) const { return impl_->json(exact); }
+std::string SurfacesSolution::svg() const { return impl_->svg(); }
+const SurfacesSolution::Summary& SurfacesSolution::summary() const { return impl_->summary; }
+const StageTimes& SurfacesSolution::times() const { return impl_->times; }
+KernelKind SurfacesSolution::kernel() const { return impl_->kernel; }
+
+SurfacesSolution solve_surfaces(const Scene& scene, const View& view, const SurfacesOptions& options,
+                                double read_seconds) {
+  return with_kernel(options.kernel, [&]<class K>(KernelKind kind) {
+    options.progress.report(std::to_string(scene.input.faces) + " faces read; building polygons");
+    hidden_line::SolveOptions solve;
+    solve.sources = options.sources;
+    solve.progress = options.progress;
+    auto impl = std::make_shared<SurfacesImpl<K>>(scene, hidden_line::solve_view<K>(scene, view, solve));
+    impl->kernel = kind;
+    impl->times = impl->solution.times;
+    impl->times.read = read_seconds;
+    impl->times.total += read_seconds;
+    impl->summary = {impl->solution.sources.stats, impl->solution.map.stats, impl->solution.map.visible.size(),
+                     impl->solution.map.hidden.size()};
+    return SurfacesSolution(std::move(impl));
+  });
+}
+
+}  // namespace hlr::exporter

@@ -216,18 +216,21 @@ TEST_P(ShadowScenes, Oracle) {
   const auto errors = check_shadows(meshes, lights, r, options);
   EXPECT_TRUE(errors.empty()) << joined(errors);
 }
-std::vector<std::string> shared_scene_names() {
+std::vector<std::string> scene_names(const char* list_text) {
   std::vector<std::string> out;
-  std::stringstream list(HLR_SHADOW_SCENES);
+  std::stringstream list(list_text);
   for (std::string s; std::getline(list, s, ',');) out.push_back(s);
   return out;
 }
-INSTANTIATE_TEST_SUITE_P(Shared, ShadowScenes, ::testing::ValuesIn(shared_scene_names()), [](const auto& info) {
+std::string scene_test_name(const ::testing::TestParamInfo<std::string>& info) {
   std::string n = info.param.substr(0, info.param.find('.'));
   for (char& ch : n)
     if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
   return n;
-});
+}
+INSTANTIATE_TEST_SUITE_P(Shared, ShadowScenes, ::testing::ValuesIn(scene_names(HLR_SHADOW_SCENES)), scene_test_name);
+INSTANTIATE_TEST_SUITE_P(SharedSoak, ShadowScenes, ::testing::ValuesIn(scene_names(HLR_SHADOW_SOAK_SCENES)),
+                         scene_test_name);
 
 // ---------------------------------------------------------------------------------------------
 // Random grid-snapped boxes on a ground, with a triangle soup, under random rational suns.

@@ -198,6 +198,25 @@ TEST_F(CliShadows, BadInputIsOneLineAndNoFile) {
                  "hlr: " + (dir_ / "missing.off").string());
 }
 
+TEST_F(CliShadows, OneThreadAndTwoGiveTheSameResult) {
+  // Enough sources for the light view's area sort to run in parallel strips.
+  const fs::path mesh = fs::path(HLR_SHARED_SCENES) / "couplingdown.off";
+  if (!fs::exists(mesh)) GTEST_SKIP() << "no " << mesh;
+  std::string csv[2];
+  json doc[2];
+  for (int t = 0; t < 2; ++t) {
+    const std::string tag = std::to_string(t + 1);
+    const Outcome run = hlr({"shadows", mesh.string(), "--sun", "1,2,-4", "--sun", "0.3,-1,-0.5", "--threads", tag, "-o",
+                             out(tag + ".json").string(), "-o", out(tag + ".csv").string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    csv[t] = slurp(out(tag + ".csv"));
+    doc[t] = json::parse(slurp(out(tag + ".json")));
+    doc[t].erase("stats");
+  }
+  EXPECT_EQ(csv[0], csv[1]);
+  EXPECT_TRUE(doc[0] == doc[1]);
+}
+
 TEST_F(CliShadows, HelpShowsAnExample) {
   const Outcome run = hlr({"shadows", "--help"});
   EXPECT_EQ(run.exit_code, 0);

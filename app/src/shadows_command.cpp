@@ -2,6 +2,7 @@
 //  -o OUT.json|OUT.csv|OUT.svg`: the options, then hidden_line::cast_shadows, then the writers.
 #include "atomic_file.hpp"
 #include "errors.hpp"
+#include "light_options.hpp"
 #include "scene_options.hpp"
 #include "subcommand.hpp"
 
@@ -39,22 +40,6 @@ Format format_of(const std::string& path) {
   throw UserError(path, "unknown output format (the name must end in .json, .csv or .svg)");
 }
 
-// "X,Y,Z": three finite numbers, taken as exact doubles.
-Vec3 parse_vector(const std::string& option, const std::string& text) {
-  Vec3 v{};
-  std::size_t at = 0;
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t comma = text.find(',', at);
-    const std::string part = text.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
-    char* end = nullptr;
-    v[i] = std::strtod(part.c_str(), &end);
-    if (part.empty() || end != part.c_str() + part.size() || (i < 2) != (comma != std::string::npos))
-      throw UsageError(option + " " + text + ": expected three numbers X,Y,Z");
-    at = comma + 1;
-  }
-  return v;
-}
-
 struct Lights {
   std::vector<hidden_line::Light> lights;
   std::vector<exporter::LightLabel> labels;
@@ -64,9 +49,7 @@ Lights resolve_lights(const ShadowsOptions& o) {
   Lights out;
   if (!o.point_lights.empty())
     throw UsageError("--point-light " + o.point_lights.front() + ": point lights are not supported yet (use --sun)");
-  for (const auto& s : o.suns) {
-    hidden_line::Light light{hidden_line::Light::directional, parse_vector("--sun", s)};
-    if (auto defect = hidden_line::light_defect(light)) throw UsageError("--sun " + s + ": " + *defect);
+  for (const auto& light : parse_suns(o.suns)) {
     out.lights.push_back(light);
     out.labels.push_back({"sun" + std::to_string(out.lights.size()), std::nullopt, {}, 0, 0});
   }

@@ -2,6 +2,8 @@
 // modules' instantiate_<kernel>.cpp files: this file only chains them.
 #include <hlr/export/jobs.hpp>
 
+#include "shadow_areas.hpp"
+
 #include <tbb/global_control.h>
 #include <tbb/task_group.h>
 
@@ -76,6 +78,16 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   mark = std::chrono::steady_clock::now();
   solution->segments = hidden_line::drawing_segments<K>(solution->lines);
   times.precedence = seconds_since(mark);
+  std::vector<DrawingArea> shadows;
+  if (!options.shadow_lights.empty()) {
+    if constexpr (std::is_same_v<K, ExactKernel>) {
+      check();
+      progress.report("shadows of " + std::to_string(options.shadow_lights.size()) + " light(s)");
+      shadows = detail::shadow_areas(scene, frame, solution->sources, solution->map, options.shadow_lights);
+    } else {
+      throw std::invalid_argument("shadows in a drawing need the exact kernel");
+    }
+  }
   // The stages' own times overlap where the intersections were found beside the polygons.
   times.total = seconds_since(begin) + (found_before ? times.intersections : 0);
 
@@ -88,6 +100,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   times.write = seconds_since(mark);
   drawing.crease_degrees = options.crease;
   drawing.times = times;
+  drawing.shadows = std::move(shadows);
   return drawing;
 }
 

@@ -217,6 +217,30 @@ TEST_F(CliShadows, OneThreadAndTwoGiveTheSameResult) {
   EXPECT_TRUE(doc[0] == doc[1]);
 }
 
+TEST_F(CliShadows, DrawWithSunFillsTheShadowsAndIsTheGoldenFile) {
+  // Regenerate: hlr draw fixtures/shadows/box_on_ground.off --view iso --sun 1,2,-4
+  //   -o tests/golden/shadows/box_on_ground_iso_sun.svg -o tests/golden/shadows/box_on_ground_iso_sun.dxf
+  const Outcome run = hlr({"draw", box(), "--view", "iso", "--sun", "1,2,-4", "-o", out("d.svg").string(), "-o",
+                           out("d.dxf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = slurp(out("d.svg")), dxf = slurp(out("d.dxf"));
+  EXPECT_NE(svg.find("<g id=\"shadows\" fill=\"#d1d1d1\" stroke=\"none\""), std::string::npos);
+  EXPECT_NE(dxf.find("HATCH"), std::string::npos);
+  EXPECT_NE(dxf.find("SHADOW"), std::string::npos);
+  EXPECT_EQ(svg, slurp(kGolden / "box_on_ground_iso_sun.svg"));
+  EXPECT_EQ(dxf, slurp(kGolden / "box_on_ground_iso_sun.dxf"));
+  // Without --sun: no shadow group, no SHADOW layer.
+  ASSERT_EQ(hlr({"draw", box(), "--view", "iso", "-o", out("p.svg").string(), "-o", out("p.dxf").string()}).exit_code, 0);
+  EXPECT_EQ(slurp(out("p.svg")).find("shadows"), std::string::npos);
+  EXPECT_EQ(slurp(out("p.dxf")).find("SHADOW"), std::string::npos);
+}
+
+TEST_F(CliShadows, DrawSunMistakes) {
+  expect_failure({"draw", box(), "--view", "iso", "--sun", "0,0,0", "-o", out("x.svg").string()}, 2, "hlr: --sun 0,0,0: ");
+  expect_failure({"draw", box(), "--view", "iso", "--sun", "1,2,-4", "--kernel", "epick", "-o", out("x.svg").string()},
+                 2, "hlr: --sun 1,2,-4: ", "exact path only");
+}
+
 TEST_F(CliShadows, HelpShowsAnExample) {
   const Outcome run = hlr({"shadows", "--help"});
   EXPECT_EQ(run.exit_code, 0);

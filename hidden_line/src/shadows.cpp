@@ -13,6 +13,7 @@
 //      source in the light view, where faces and fragments share their support lines.
 // Sources facing away or seen edge-on are in attached shadow: their model-space polygons, built
 // once for all lights (model_sources), are the shadow.
+// shadows_in_view takes the result into another view as surface detail (hlr draw --sun).
 #include <hlr/hidden_line/shadows.hpp>
 
 #include "box_index.hpp"
@@ -20,6 +21,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -617,6 +619,53 @@ ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Lig
   result.face_area2 = std::move(model.face_area2);
   result.times.total = seconds_since(start);
   return result;
+}
+
+std::vector<clip::Polygon<K>> shadows_in_view(const ShadowResult& shadows, const ViewFrame<K>& frame, Sources<K>& sources,
+                                              const VisibilityMap<K>& map) {
+  // Every shadow polygon of a source that the view sees, projected once: a polygon on new support
+  // lines of the view's table (its corners are the exact projections of its model corners).
+  std::map<std::uint32_t, std::vector<std::pair<clip::Polygon<K>, CGAL::Bbox_2>>> projected;
+  auto projection = [&](std::uint32_t model_source) -> const auto& {
+    auto [it, added] = projected.try_emplace(model_source);
+    if (!added) return it->second;
+    auto contour = [&](const std::vector<hidden_line::ShadowPoint>& c) {
+      std::vector<G::Point> points;
+      for (const auto& p : c) {
+        const ViewPoint<K> v = frame.to_view(p.x, p.y, p.z);
+        points.push_back(G::point(v.x, v.y));
+      }
+      clip::Contour<K> out = clip::make_contour<K>(points, sources.lines);
+      sources.line_origins.resize(sources.lines.size());  // auxiliary lines
+      return out;
+    };
+    for (const auto& light : shadows.sources[model_source].lights)
+      for (const auto& shadow : light.shadow) {
+        clip::Polygon<K> polygon{contour(shadow.polygon.outer), {}};
+        for (const auto& h : shadow.polygon.holes) polygon.holes.push_back(contour(h));
+        // Seen edge-on in this view, a polygon has no area: nothing to draw.
+        if (clip::normalize_polygon(polygon)) continue;
+        const CGAL::Bbox_2 box = detail::box_of(polygon);
+        it->second.push_back({std::move(polygon), box});
+      }
+    return it->second;
+  };
+
+  std::vector<clip::Polygon<K>> out;
+  for (const auto& fragment : map.visible) {
+    const auto& sp = sources.polygons[fragment.source];
+    const auto& polygons = projection(shadows.face_source[sp.mesh][sp.faces.front()]);
+    if (polygons.empty()) continue;
+    const CGAL::Bbox_2 box = detail::box_of(fragment.polygon);
+    std::vector<clip::Polygon<K>> subjects;
+    for (const auto& [polygon, b] : polygons)
+      if (CGAL::do_overlap(b, box)) subjects.push_back(polygon);
+    if (subjects.empty()) continue;
+    const clip::ClipRegion<K> region(fragment.polygon, sources.lines);
+    for (auto& result : clip::clip_list<K>(subjects, region))
+      for (auto& piece : result.inside) out.push_back(std::move(piece));
+  }
+  return out;
 }
 
 ShadowResult cast_shadows(const Scene& scene, const std::vector<Light>& lights, const ShadowOptions& options) {

@@ -144,4 +144,13 @@ ShadowResult cast_shadows(const Scene& scene, const std::vector<Light>& lights, 
 ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Light>& lights,
                           const ShadowOptions& options = {});
 
+// Shadows as surface detail of a view (hlr draw --sun; after Weiler and Atherton, "a normal hidden
+// surface removed view can be taken from any viewpoint to create a correctly shadowed scene"): the
+// shadow polygons of `shadows` (solved for the scene `sources` was built from) projected exactly
+// into the view and clipped exactly to the visible polygons of their sources there. Their support
+// lines are appended to sources.lines (auxiliary lines, which no later stage reads).
+std::vector<clip::Polygon<ExactKernel>> shadows_in_view(const ShadowResult& shadows, const ViewFrame<ExactKernel>& frame,
+                                                        Sources<ExactKernel>& sources,
+                                                        const VisibilityMap<ExactKernel>& map);
+
 }  // namespace hlr::hidden_line

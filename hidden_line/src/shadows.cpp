@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -393,6 +394,27 @@ class LightSolver {
     return {std::move(c), {}};
   }
 
+  // The faces of a consolidated light-view source as polygons, with a grid of their boxes: made
+  // once per source, when `by` or a per-face area first needs them.
+  struct FaceIndex {
+    std::vector<clip::Polygon<K>> polygons;  // parallel to the source's faces
+    detail::LooseGrid grid;
+  };
+  const FaceIndex& face_index(std::uint32_t area_source) {
+    auto it = face_indices_.find(area_source);
+    if (it != face_indices_.end()) return *it->second;
+    const auto& sp = sources_.polygons[area_source];
+    std::vector<clip::Polygon<K>> polygons;
+    CGAL::Bbox_2 domain;
+    for (std::uint32_t f : sp.faces) {
+      polygons.push_back(face_polygon(sp.mesh, f));
+      domain += detail::box_of(polygons.back());
+    }
+    auto index = std::make_unique<FaceIndex>(FaceIndex{std::move(polygons), detail::LooseGrid(domain, sp.faces.size())});
+    for (std::uint32_t k = 0; k < index->polygons.size(); ++k) index->grid.insert(k, detail::box_of(index->polygons[k]));
+    return *face_indices_.emplace(area_source, std::move(index)).first->second;
+  }
+
   // The pieces of `subjects` inside `region`, per subject.
   std::vector<clip::ClipResult<K>> clip_by(const clip::Polygon<K>& region, std::span<const clip::Polygon<K>> subjects) {
     const clip::ClipRegion<K> r(region, sources_.lines, &crossings_);
@@ -421,12 +443,14 @@ class LightSolver {
         for (const auto& piece : results[i].inside) b += detail::box_of(piece);
         return b;
       }();
-      for (std::uint32_t f : sp.faces) {
-        const clip::Polygon<K> face = face_polygon(sp.mesh, f);
-        if (!CGAL::do_overlap(detail::box_of(face), box)) continue;
-        const auto parts = clip_by(face, results[i].inside);
+      const FaceIndex& index = face_index(map.visible[candidates[i]].source);
+      std::vector<std::uint32_t> near;
+      index.grid.query(box, [&](std::uint32_t k) { near.push_back(k); });
+      std::sort(near.begin(), near.end());
+      for (std::uint32_t k : near) {
+        const auto parts = clip_by(index.polygons[k], results[i].inside);
         if (std::any_of(parts.begin(), parts.end(), [](const auto& r) { return !r.inside.empty(); }))
-          by.push_back({sp.mesh, f});
+          by.push_back({sp.mesh, sp.faces[k]});
       }
     }
     std::sort(by.begin(), by.end());
@@ -451,29 +475,27 @@ class LightSolver {
       const ShadowSource& s = model_.sources[m];
       const SourceLight& sl = s.lights[k_];
       if (sl.facing != Facing::toward) continue;
-      for (std::uint32_t f : s.faces) {
-        std::vector<ShadowPolygon> pieces;
-        if (s.faces.size() == 1) {
-          pieces = sl.lit;
-        } else {
-          const clip::Polygon<K> face = face_polygon(s.mesh, f);
-          const CGAL::Bbox_2 box = detail::box_of(face);
-          std::vector<clip::Polygon<K>> subjects;
-          std::vector<std::uint32_t> area_source;
-          for (const auto& [polygon, source] : lit_view_[m])
-            if (CGAL::do_overlap(detail::box_of(polygon), box)) {
-              subjects.push_back(polygon);
-              area_source.push_back(source);
-            }
-          const auto parts = clip_by(face, subjects);
-          for (std::size_t i = 0; i < parts.size(); ++i)
-            for (const auto& piece : parts[i].inside) pieces.push_back(lift(piece, area_source[i]));
-        }
-        for (const auto& p : pieces) {
-          const FT a2 = twice_area_seen_from_front(p, s.normal, s.axis);
-          lit_area2[s.mesh][f] += a2;
-          lit_area[s.mesh][f] += G::to_double(a2) / 2 * model_.factor[m];
-          if (options_.union_shadows) face_lit_uv[s.mesh][f].push_back(uv_polygon(p, s));
+      auto add = [&](std::uint32_t f, const ShadowPolygon& p) {
+        const FT a2 = twice_area_seen_from_front(p, s.normal, s.axis);
+        lit_area2[s.mesh][f] += a2;
+        lit_area[s.mesh][f] += G::to_double(a2) / 2 * model_.factor[m];
+        if (options_.union_shadows) face_lit_uv[s.mesh][f].push_back(uv_polygon(p, s));
+      };
+      if (s.faces.size() == 1) {
+        for (const auto& p : sl.lit) add(s.faces.front(), p);
+        continue;
+      }
+      // Each lit piece clipped by the faces of its light-view source that it can overlap.
+      for (const auto& [polygon, area_source] : lit_view_[m]) {
+        const FaceIndex& index = face_index(area_source);
+        const auto& faces = sources_.polygons[area_source].faces;
+        std::vector<std::uint32_t> near;
+        index.grid.query(detail::box_of(polygon), [&](std::uint32_t k) { near.push_back(k); });
+        std::sort(near.begin(), near.end());
+        const std::span<const clip::Polygon<K>> one(&polygon, 1);
+        for (std::uint32_t k : near) {
+          const auto parts = clip_by(index.polygons[k], one);
+          for (const auto& piece : parts[0].inside) add(faces[k], lift(piece, area_source));
         }
       }
     }
@@ -526,6 +548,7 @@ class LightSolver {
   std::vector<std::uint32_t> model_of_;  // per light-view source: its model source
   std::vector<std::vector<std::pair<clip::Polygon<K>, std::uint32_t>>> lit_view_;  // per model source: lit pieces
   clip::CrossingCache<K> crossings_;
+  std::unordered_map<std::uint32_t, std::unique_ptr<FaceIndex>> face_indices_;
 };
 
 }  // namespace

@@ -11,6 +11,8 @@ packages=(
   libopenmesh-dev libglm-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   # allocator of the hlr program (app/CMakeLists.txt): tcmalloc_minimal
   libgoogle-perftools-dev
+  # the sun's position for hlr shadows --sun-at (kernel/src/sun.cpp)
+  libnova-dev
   # DXF, PNG and PDF writers (export/)
   libdxflib-dev libpng-dev libcairo2-dev
   # tests and benchmarks

@@ -3,6 +3,7 @@
 #include "atomic_file.hpp"
 #include "errors.hpp"
 #include "interrupt.hpp"
+#include "light_options.hpp"
 #include "line_options.hpp"
 #include "progress_display.hpp"
 #include "style_options.hpp"
@@ -25,6 +26,7 @@ struct DrawOptions {
   StyleOptions style;
   int raster = 0;  // pixels; 0: the exact path (or --kernel)
   std::string dash = "arc";
+  std::vector<std::string> suns;  // --sun: shadows as surface detail
 };
 
 enum class Format { json, svg, pdf, dxf, png };
@@ -61,6 +63,9 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   const double read = seconds_since(start);
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;
+  job.shadow_lights = parse_suns(options.suns);
+  if (!job.shadow_lights.empty() && (kind != KernelKind::exact || options.raster > 0))
+    throw UsageError("--sun " + options.suns.front() + ": shadows are drawn by the exact path only");
   job.progress = display.progress();
   job.free_at_exit = true;  // the run ends with the outputs
   exporter::RasterRun raster;
@@ -182,6 +187,10 @@ Subcommand add_draw_command(CLI::App& parent) {
                   "along the longer side; needed for .png output")
       ->check(CLI::Range(16, 8192))
       ->type_name("N");
+  cmd->add_option("--sun", options->suns,
+                  "draw the shadows of a directional light whose rays travel along DX,DY,DZ as surface detail "
+                  "(filled light grey; DXF: HATCH on layer SHADOW); may be given several times")
+      ->type_name("DX,DY,DZ");
   cmd->add_option("--dash", options->dash,
                   "hidden-line dashes in the PNG: arc (by arc length along each line) or paper (the P-buffer "
                   "paper's 8x8 screen pattern, which breaks up on diagonal lines)")

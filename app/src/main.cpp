@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_sheet_command(app));
   commands.push_back(add_check_command(app));
   commands.push_back(add_surfaces_command(app));
+  commands.push_back(add_shadows_command(app));
   commands.push_back(add_clip_command(app));
 
   app.footer(
@@ -91,6 +92,7 @@ int main(int argc, char** argv) {
       "  hlr draw fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg -o out/bracket.dxf\n"
       "  hlr sheet fixtures/parts/flange.off --views front,top,right,iso -o out/flange.pdf\n"
       "  hlr surfaces fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg\n"
+      "  hlr shadows fixtures/shadows/box_on_ground.off --sun 1,2,-4 -o out/box_shadows.json\n"
       "  hlr clip fixtures/clip/subject.json fixtures/clip/clip.json -o out/clip-result.json\n"
       "\n"
       "Run 'hlr SUBCOMMAND --help' for a subcommand's options; formats are in docs/FORMATS.md.\n"

@@ -27,6 +27,7 @@ inline void add_kernel_option(CLI::App& cmd, std::string& kernel) {
 // One per subcommand file.
 Subcommand add_clip_command(CLI::App& parent);
 Subcommand add_surfaces_command(CLI::App& parent);
+Subcommand add_shadows_command(CLI::App& parent);
 Subcommand add_draw_command(CLI::App& parent);
 Subcommand add_sheet_command(CLI::App& parent);
 Subcommand add_check_command(CLI::App& parent);

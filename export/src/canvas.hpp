@@ -5,6 +5,7 @@
 // Groups carry the line style (a Pen) as SVG groups do; the PDF canvas keeps a stack of them.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -23,6 +24,7 @@ struct GroupStyle {
   std::optional<Pen> pen;   // lines in the group: black, unfilled, this width and dash pattern
   bool line_caps = false;   // butt caps, round joins (the drawing's lines)
   bool lettering = false;   // text in the group: sans-serif, black
+  std::optional<std::array<double, 3>> fill;  // paths in the group: filled in this colour (RGB 0..1), no stroke
 
   static GroupStyle named(std::string id, std::string cls = {}) {
     GroupStyle g;

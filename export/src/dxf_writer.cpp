@@ -250,6 +250,27 @@ void dxf_curves(DL_Dxf& dxf, DxfText& out, const DrawingCurves& curves, bool hid
   }
 }
 
+void dxf_hatches(DL_Dxf& dxf, DxfText& out, const std::vector<DrawingArea>& areas, const std::string& layer) {
+  const DL_Attributes a(layer, 256, -1, "BYLAYER", 1.0);
+  for (const auto& area : areas) {
+    const DL_HatchData hatch(int(1 + area.holes.size()), true, 1.0, 0.0, "SOLID");
+    dxf.writeHatch1(out, hatch, a);
+    auto loop = [&](const std::vector<std::array<double, 2>>& c) {
+      const DL_HatchLoopData data(int(c.size()));
+      dxf.writeHatchLoop1(out, data);
+      for (std::size_t i = 0; i < c.size(); ++i) {
+        const auto& p = c[i];
+        const auto& q = c[(i + 1) % c.size()];
+        dxf.writeHatchEdge(out, DL_HatchEdgeData(p[0], p[1], q[0], q[1]));
+      }
+      dxf.writeHatchLoop2(out, data);
+    };
+    loop(area.outer);
+    for (const auto& h : area.holes) loop(h);
+    dxf.writeHatch2(out, hatch, a);
+  }
+}
+
 void dxf_centre_lines(DL_Dxf& dxf, DxfText& out, const std::vector<CentreLine>& lines, const std::string& layer,
                       double ltscale) {
   for (const auto& l : lines)

@@ -67,6 +67,8 @@ void dxf_curves(DL_Dxf& dxf, DxfText& out, const DrawingCurves& curves, bool hid
                 const std::function<std::string(bool visible, std::uint32_t mesh)>& layer, double ltscale);
 void dxf_centre_lines(DL_Dxf& dxf, DxfText& out, const std::vector<CentreLine>& lines, const std::string& layer,
                       double ltscale);
+// Filled areas (shadows) as solid HATCH entities on `layer`, one boundary loop of lines per contour.
+void dxf_hatches(DL_Dxf& dxf, DxfText& out, const std::vector<DrawingArea>& areas, const std::string& layer);
 
 // The HEADER section: version, $HANDSEED, units ($INSUNITS: 4 mm, 5 cm, 6 m, 1 in), metric or
 // not, $LTSCALE, lineweights shown, and the extents.

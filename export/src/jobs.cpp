@@ -2,6 +2,7 @@
 // modules' instantiate_<kernel>.cpp files: this file only chains them.
 #include <hlr/export/jobs.hpp>
 
+
 #include <tbb/global_control.h>
 #include <tbb/task_group.h>
 
@@ -81,6 +82,28 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   mark = std::chrono::steady_clock::now();
   solution->segments = hidden_line::drawing_segments<K>(solution->lines, progress.stop);
   times.precedence = seconds_since(mark);
+  std::vector<DrawingArea> shadows;
+  if (!options.shadow_lights.empty()) {
+    if constexpr (std::is_same_v<K, ExactKernel>) {
+      check();
+      progress.report("shadows of " + std::to_string(options.shadow_lights.size()) + " light(s)");
+      hidden_line::ShadowOptions shadow_options;
+      shadow_options.light_views = false;
+      const auto result = hidden_line::cast_shadows(scene, options.shadow_lights, shadow_options);
+      auto rounded = [&](const clip::Contour<K>& c) {
+        std::vector<std::array<double, 2>> points;
+        for (const auto& q : c.points) points.push_back({frame.rounded(q.x(), 0), frame.rounded(q.y(), 1)});
+        return points;
+      };
+      for (const auto& piece : hidden_line::shadows_in_view(result, frame, solution->sources, solution->map)) {
+        DrawingArea& area = shadows.emplace_back();
+        area.outer = rounded(piece.outer);
+        for (const auto& h : piece.holes) area.holes.push_back(rounded(h));
+      }
+    } else {
+      throw std::invalid_argument("shadows in a drawing need the exact kernel");
+    }
+  }
   // The stages' own times overlap where the intersections were found beside the polygons.
   times.total = seconds_since(begin) + (found_before ? times.intersections : 0);
 
@@ -94,6 +117,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   times.write = seconds_since(mark);
   drawing.crease_degrees = options.crease;
   drawing.times = times;
+  drawing.shadows = std::move(shadows);
   return drawing;
 }
 

@@ -172,6 +172,7 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, con
     layers.push_back({layer(false, part), 8, widths.narrow, "HIDDEN"});
   }
   layers.push_back({"CENTER", 1, widths.narrow, "CENTER"});
+  if (!lines.shadows.empty()) layers.push_back({"SHADOW", 9, widths.narrow, "CONTINUOUS"});
   detail::dxf_layers(dxf, body, layers);
   detail::dxf_other_tables(dxf, body, {});
 
@@ -183,6 +184,7 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, con
   body.sectionEnd();
 
   body.sectionEntities();
+  detail::dxf_hatches(dxf, body, lines.shadows, "SHADOW");
   detail::dxf_curves(dxf, body, lines.curves, style.hidden, layer, 1.0);
   detail::dxf_centre_lines(dxf, body, lines.centre_lines, "CENTER", 1.0);
   body.sectionEnd();

@@ -245,6 +245,27 @@ void paint_view(Canvas& c, const SheetLines& lines, const Placement& at, const s
     }
     c.end();
   };
+  if (!lines.shadows.empty()) {
+    // Shadows (hlr draw --sun): surface detail of the visible faces, filled light grey without
+    // an outline, below every line.
+    GroupStyle g = GroupStyle::named(prefix + "shadows");
+    g.fill = std::array<double, 3>{0.82, 0.82, 0.82};
+    c.begin(g);
+    for (const auto& area : lines.shadows) {
+      SheetPath p;
+      auto contour = [&](const std::vector<std::array<double, 2>>& points) {
+        for (std::size_t i = 0; i < points.size(); ++i) {
+          if (i == 0) p.move(at.x(points[i][0]), at.y(points[i][1]));
+          else p.line(at.x(points[i][0]), at.y(points[i][1]));
+        }
+        p.close();
+      };
+      contour(area.outer);
+      for (const auto& h : area.holes) contour(h);
+      c.path(p);
+    }
+    c.end();
+  }
   if (style.hidden) group(false);  // below the visible lines
   group(true);
   if (lines.centre_lines.empty()) return;

@@ -37,8 +37,14 @@ class PdfCanvas final : public Canvas {
     if (surface_) cairo_surface_destroy(surface_);
   }
 
-  void begin(const GroupStyle& g) override { pens_.push_back(g.pen ? *g.pen : pens_.back()); }
-  void end() override { pens_.pop_back(); }
+  void begin(const GroupStyle& g) override {
+    pens_.push_back(g.pen ? *g.pen : pens_.back());
+    fills_.push_back(g.fill ? g.fill : fills_.empty() ? std::nullopt : fills_.back());
+  }
+  void end() override {
+    pens_.pop_back();
+    fills_.pop_back();
+  }
 
   void path(const SheetPath& p, double dash_offset) override {
     cairo_new_path(cr_);
@@ -62,6 +68,15 @@ class PdfCanvas final : public Canvas {
           break;
         case SheetPath::Op::close: cairo_close_path(cr_); break;
       }
+    }
+    if (!fills_.empty() && fills_.back()) {
+      // A filled area (a shadow): even-odd, in its colour, no outline.
+      const auto& rgb = *fills_.back();
+      cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_EVEN_ODD);
+      cairo_set_source_rgb(cr_, rgb[0], rgb[1], rgb[2]);
+      cairo_fill(cr_);
+      cairo_set_source_rgb(cr_, 0, 0, 0);
+      return;
     }
     stroke(dash_offset);
   }
@@ -114,6 +129,7 @@ class PdfCanvas final : public Canvas {
     cairo_stroke(cr_);
   }
 
+  std::vector<std::optional<std::array<double, 3>>> fills_;  // per open group
   cairo_surface_t* surface_ = nullptr;
   cairo_t* cr_ = nullptr;
   std::vector<Pen> pens_;

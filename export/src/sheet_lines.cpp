@@ -125,6 +125,7 @@ SheetLines sheet_lines_at(const LineDrawing& drawing, const DrawingStyle& style,
   const double tolerance = style.merge_distance / scale;  // the drawing's resolution, in model units
   sheet.curves = recover_curves(sheet.chains, style.circles ? tolerance : 0);
   if (style.centre_lines) sheet.centre_lines = centre_marks(sheet.curves, tolerance, centre_overshoot_mm / scale);
+  sheet.shadows = drawing.shadows;
   return sheet;
 }
 

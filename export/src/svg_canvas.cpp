@@ -6,6 +6,7 @@
 #include "text.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace hlr::exporter::detail {
 namespace {
@@ -48,6 +49,12 @@ class SvgCanvas final : public Canvas {
     }
     if (g.line_caps) out_ += " stroke-linecap=\"butt\" stroke-linejoin=\"round\"";
     if (g.lettering) out_ += " font-family=\"sans-serif\" fill=\"#000\"";
+    if (g.fill) {
+      char colour[8];
+      std::snprintf(colour, sizeof colour, "#%02x%02x%02x", int(std::lround(255 * (*g.fill)[0])),
+                    int(std::lround(255 * (*g.fill)[1])), int(std::lround(255 * (*g.fill)[2])));
+      out_ += " fill=\"" + std::string(colour) + "\" stroke=\"none\" fill-rule=\"evenodd\"";
+    }
     out_ += ">\n";
   }
 

@@ -9,6 +9,7 @@
          layers. A sheet of hlr sheet (blocks VIEW_*) has layers VISIBLE, HIDDEN, CENTER and BORDER,
          in model space only BORDER entities and inserts of the view blocks, and in the blocks only
          VISIBLE, HIDDEN and CENTER entities.
+         A drawing with shadows (hlr draw --sun) also has layer SHADOW with solid HATCH entities only.
   .svg   parsed with xml.etree (root <svg>, size in mm, every path and circle of the visible and
          hidden groups inside a part group <g id="part-NAME-visible|hidden" class="part-NAME">, or in
          a sheet inside a view group <g id="view-NAME">, ids unique) and rendered with rsvg-convert
@@ -74,6 +75,14 @@ def check_dxf(path):
     wanted = {name for pair in pairs for name in pair} | {"CENTER"}
     for name in sorted(wanted):
         require(doc.layers.has_entry(name), f"layer {name} missing")
+    # hlr draw --sun: the shadows, solid HATCH entities on layer SHADOW, and nothing else there.
+    shadows = None
+    if doc.layers.has_entry("SHADOW"):
+        on_shadow = doc.modelspace().query('*[layer=="SHADOW"]')
+        require(all(e.dxftype() == "HATCH" for e in on_shadow), "entities other than HATCH on layer SHADOW")
+        require(all(e.dxf.solid_fill == 1 for e in on_shadow), "a HATCH on layer SHADOW is not solid")
+        shadows = len(on_shadow)
+        wanted |= {"SHADOW"}
     # ezdxf adds "Defpoints" as it loads a file
     extra = {layer.dxf.name for layer in doc.layers if layer.dxf.name.lower() != "defpoints"} - wanted - {"0"}
     require(not extra, f"unexpected layers {sorted(extra)}")
@@ -89,6 +98,8 @@ def check_dxf(path):
     if PARTS:
         per_layer = ", ".join(f"{layer} {n}" for layer, n in counts.items())
         return f"entities: {per_layer}; {curves}; hidden dashed {pattern}, ezdxf audit: 0 errors, {fixes} fixes"
+    if shadows is not None:
+        curves += f", {shadows} shadow hatches"
     return (f"{counts['VISIBLE']} visible, {counts['HIDDEN']} hidden, {counts['CENTER']} centre entities, {curves}, "
             f"HIDDEN dashed {pattern}, CENTER {centre}, $LTSCALE {doc.header.get('$LTSCALE', 1)}, "
             f"ezdxf audit: 0 errors, {fixes} fixes")

@@ -16,6 +16,7 @@
 #include <hlr/export/lines.hpp>
 #include <hlr/export/surfaces.hpp>
 #include <hlr/hidden_line/jobs.hpp>
+#include <hlr/hidden_line/shadows.hpp>
 
 #include <memory>
 #include <string>
@@ -34,6 +35,9 @@ struct DrawOptions {
   // and exits. Freeing millions of lazy exact numbers one by one took 2.9 s of a 46 s run on 300k
   // faces; the operating system takes the memory back at once.
   bool free_at_exit = false;
+  // Shadows as surface detail (LineDrawing::shadows): the shadow areas of these lights on the
+  // visible faces. Exact kernel only (std::invalid_argument otherwise); draw_lines only.
+  std::vector<hidden_line::Light> shadow_lights;
   Progress progress;
 };
 

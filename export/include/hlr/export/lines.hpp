@@ -68,6 +68,13 @@ struct RasterInfo {
   double pixel = 0;  // model units per pixel
 };
 
+// A filled area of a drawing (hlr draw --sun: a shadow on a visible face), in view coordinates
+// like the segments: outer counter-clockwise, holes clockwise.
+struct DrawingArea {
+  std::vector<std::array<double, 2>> outer;
+  std::vector<std::vector<std::array<double, 2>>> holes;
+};
+
 struct LineDrawing {
   InputInfo input;
   ViewInfo view;
@@ -75,6 +82,7 @@ struct LineDrawing {
   std::optional<RasterInfo> raster;      // JSON "kernel": "raster" and a "raster" object
   std::vector<DrawingPiece> pieces;      // JSON: every piece
   std::vector<DrawingSegment> segments;  // SVG and DXF
+  std::vector<DrawingArea> shadows;      // SVG and DXF: with DrawOptions::shadow_lights
   hidden_line::LineStats stats;
   double crease_degrees = 30;
   StageTimes times;
@@ -200,6 +208,7 @@ struct SheetLines {
   std::vector<DrawingPolyline> chains;   // chain_segments(merged.segments)
   DrawingCurves curves;                  // the chains with their circles and arcs (what is drawn)
   std::vector<CentreLine> centre_lines;  // centre marks, model units
+  std::vector<DrawingArea> shadows;      // LineDrawing::shadows
 };
 // Without style.scale, the scale is drawing_scale's, or the next smaller ISO scale if the
 // recovered circles (which reach out beyond their polygons) do not fit at it.

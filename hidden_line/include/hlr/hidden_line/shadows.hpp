@@ -1,0 +1,156 @@
+// hlr hidden_line, shadows: which parts of every face a light reaches, exactly (Weiler and
+// Atherton's "Shadowing"; DESIGN.md, "Shadows: hlr shadows and the contract hlr-shadows/1").
+//
+// cast_shadows solves the scene from each light on its own. For a directional light (a sun whose
+// rays travel along d) the light view is the orthographic view looking along d (the exact,
+// unnormalized ViewFrame of the exactness contract, up = +Z, or +Y when d is vertical); the area
+// sort solves it (build_sources + area_sort, the hidden polygons kept), and every fragment is taken
+// back onto its source's plane in model space by an exact rational map: a light-view point (x, y)
+// on a source whose light-view plane is z = a x + b y + c is the model point
+// p = x X/|X|² + y Y/|Y|² + z Z/|Z|² (X, Y, Z the orthogonal, unnormalized view axes).
+//
+//   lit     the visible fragments of sources that face the light, and the parts of hidden
+//           fragments hidden only by a coplanar tie: where the visible fragment over them lies
+//           exactly in their plane (nothing strictly nearer);
+//   shadow  the other hidden fragments of those sources (cast shadow; `by` = the faces of the
+//           visible fragments that overlap it in the light view with positive area: the faces
+//           nearest to the light over it), and the whole of every source that faces away from
+//           the light or is seen edge-on by it (attached shadow, `by` empty).
+// So lit + shadow = source follows from the area sort's own identity (a source's visible and
+// hidden fragments are exactly its projection); the tests check it exactly, on areas.
+//
+// Sources are light-independent: the maximal edge-connected, exactly coplanar face groups of one
+// mesh with one front side, merged in model space exactly as build_sources merges them in a view
+// (and kept face by face where that merge fails). The front side is the side a face's normal
+// (its winding) points to; in a closed component wound inward it is the outside, as for back-face
+// removal. Everything here runs on the exact kernel only; doubles appear where the result is
+// rounded for output (the *_area doubles, LightView).
+#pragma once
+
+#include <hlr/hidden_line/jobs.hpp>
+#include <hlr/hidden_line/visibility.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hlr::hidden_line {
+
+struct Light {
+  enum Kind { directional, point } kind = directional;
+  Vec3 vector{0, 0, -1};  // directional: the direction the light travels; point: its position
+};
+
+// Why a light cannot be used, or nothing: a zero or non-finite direction, a non-finite position;
+// point lights are not supported yet.
+std::optional<std::string> light_defect(const Light& light);
+
+using ShadowFT = ExactKernel::FT;
+struct ShadowPoint {
+  ShadowFT x, y, z;  // model coordinates, exact
+};
+// A planar polygon in model space, oriented as seen from its source's front side: outer
+// counter-clockwise, holes clockwise.
+struct ShadowPolygon {
+  std::vector<ShadowPoint> outer;
+  std::vector<std::vector<ShadowPoint>> holes;
+};
+
+enum class Facing { toward, away, edge_on };
+const char* facing_name(Facing facing);  // "toward", "away", "edge-on"
+
+struct CastShadow {
+  ShadowPolygon polygon;
+  std::vector<std::array<std::uint32_t, 2>> by;  // (mesh, face), sorted; empty for attached shadow
+};
+
+// One source under one light.
+struct SourceLight {
+  Facing facing = Facing::toward;
+  std::vector<ShadowPolygon> lit;  // do not overlap
+  std::vector<CastShadow> shadow;
+  ShadowFT lit_area2 = 0;          // exact: twice the lit area projected along the source's axis
+  double lit_area = 0;             // model units: the lit polygons' areas, each rounded once, summed
+};
+
+struct ShadowSource {
+  std::uint32_t mesh = 0;
+  std::vector<std::uint32_t> faces;       // indices into the mesh's face list
+  std::array<ShadowFT, 3> normal;         // toward the front side (Newell's normal of the first face)
+  ShadowFT offset = 0;                    // normal · p + offset = 0 on the plane
+  int axis = 2;                           // the coordinate with the largest |normal|: areas are
+                                          // measured exactly in the plane of the other two
+  std::vector<ShadowPolygon> polygons;    // the source itself (several where it touches itself)
+  ShadowFT area2 = 0;                     // exact: twice the area projected along `axis`
+  double area = 0;                        // model units
+  std::vector<SourceLight> lights;        // per light
+};
+
+// The light view as a picture ("the view from the sun"): its visible fragments in the
+// orthonormal light frame, rounded once; `lit` when the fragment's source faces the light.
+struct LightViewPolygon {
+  std::vector<std::array<double, 2>> outer;
+  std::vector<std::vector<std::array<double, 2>>> holes;
+  bool lit = false;
+  std::uint32_t source = 0;  // index into ShadowResult::sources
+};
+struct LightView {
+  View view;
+  std::array<std::array<double, 4>, 4> world_to_view{};
+  std::vector<LightViewPolygon> polygons;
+};
+
+struct ShadowTimes {
+  double sources = 0;   // the light-independent sources
+  double views = 0;     // the light views' polygons (build_sources), all lights
+  double sort = 0;      // the area sorts, all lights
+  double map_back = 0;  // fragments to model space, `by`, per-face areas, all lights
+  double unions = 0;    // ShadowOptions::union_shadows
+  double total = 0;
+};
+
+struct ShadowOptions {
+  AreaSortOptions sort;
+  bool light_views = true;     // fill ShadowResult::views
+  // Also the union of every face's shadows over all lights (a sun study's "shadow over the day"):
+  // ShadowResult::face_union_shadow_area.
+  bool union_shadows = false;
+  // A stage line per light ("light 2 of 7: sorting 1200 polygons"); cancellation is checked
+  // between the stages of every light (throws hlr::Cancelled).
+  Progress progress;
+};
+
+struct ShadowResult {
+  std::vector<ShadowSource> sources;  // ordered by mesh, then first face
+  // Per mesh, per face: the source it belongs to and its area (model units).
+  std::vector<std::vector<std::uint32_t>> face_source;
+  std::vector<std::vector<double>> face_area;
+  std::vector<std::vector<ShadowFT>> face_area2;  // exact, along the source's axis, twice
+  // Per light, per mesh, per face: the lit area (model units) and its exact projected double area.
+  std::vector<std::vector<std::vector<double>>> face_lit_area;
+  std::vector<std::vector<std::vector<ShadowFT>>> face_lit_area2;
+  // With union_shadows: per mesh, per face, the area in shadow under at least one light.
+  std::vector<std::vector<double>> face_union_shadow_area;
+  std::vector<std::vector<ShadowFT>> face_union_shadow_area2;
+  std::vector<LightView> views;  // per light, with ShadowOptions::light_views
+  ShadowTimes times;
+};
+
+// The library's entry point for shadows (as hidden_line/jobs.hpp's for a view): solves every
+// light on its own. Throws std::invalid_argument for a light with a defect, and Cancelled.
+ShadowResult cast_shadows(const Scene& scene, const std::vector<Light>& lights, const ShadowOptions& options = {});
+ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Light>& lights,
+                          const ShadowOptions& options = {});
+
+// Shadows as surface detail of a view (hlr draw --sun; after Weiler and Atherton, "a normal hidden
+// surface removed view can be taken from any viewpoint to create a correctly shadowed scene"): the
+// shadow polygons of `shadows` (solved for the scene `sources` was built from) projected exactly
+// into the view and clipped exactly to the visible polygons of their sources there. Their support
+// lines are appended to sources.lines (auxiliary lines, which no later stage reads).
+std::vector<clip::Polygon<ExactKernel>> shadows_in_view(const ShadowResult& shadows, const ViewFrame<ExactKernel>& frame,
+                                                        Sources<ExactKernel>& sources,
+                                                        const VisibilityMap<ExactKernel>& map);
+
+}  // namespace hlr::hidden_line

@@ -1,0 +1,698 @@
+// cast_shadows (shadows.hpp): the light views, their area sorts, and the fragments taken back to
+// model space, on the exact kernel. The only translation unit that instantiates shadow code.
+//
+// Stages per light (directional):
+//   1. light view: ViewFrame looking along the light direction; build_sources (back faces of
+//      closed components removed, as they lie behind their own front faces; edge-on faces dropped,
+//      as they cast no shadow of positive area; coplanar faces consolidated);
+//   2. area_sort with the hidden polygons kept;
+//   3. map back: each fragment of a source facing the light is lifted onto the source's plane
+//      (the rational map in shadows.hpp); visible fragments and coplanar ties are lit, the other
+//      hidden fragments are cast shadow, tagged with the faces of the visible fragments over them;
+//      per-face lit areas come from clipping the lit fragments by each face of a consolidated
+//      source in the light view, where faces and fragments share their support lines.
+// Sources facing away or seen edge-on are in attached shadow: their model-space polygons, built
+// once for all lights (model_sources), are the shadow.
+// shadows_in_view takes the result into another view as surface detail (hlr draw --sun).
+#include <hlr/hidden_line/shadows.hpp>
+
+#include "box_index.hpp"
+#include "sources_impl.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace hlr::hidden_line {
+namespace {
+
+using K = ExactKernel;
+using G = Geometry<K>;
+using FT = ShadowFT;
+using P2 = G::Point;
+using Clock = std::chrono::steady_clock;
+
+using Vec3FT = std::array<FT, 3>;
+
+// Newell's normal of a face, exact: twice its area times the unit normal of its winding.
+Vec3FT newell_normal(const Mesh& mesh, const std::vector<std::uint32_t>& face) {
+  FT nx = 0, ny = 0, nz = 0;
+  for (std::size_t i = 0; i < face.size(); ++i) {
+    const auto& p = mesh.vertices[face[i]];
+    const auto& q = mesh.vertices[face[(i + 1) % face.size()]];
+    nx += (FT(p[1]) - FT(q[1])) * (FT(p[2]) + FT(q[2]));
+    ny += (FT(p[2]) - FT(q[2])) * (FT(p[0]) + FT(q[0]));
+    nz += (FT(p[0]) - FT(q[0])) * (FT(p[1]) + FT(q[1]));
+  }
+  return {nx, ny, nz};
+}
+
+int largest_axis(const Vec3FT& n) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (CGAL::abs(n[k]) > CGAL::abs(n[axis])) axis = k;
+  return axis;
+}
+
+// Model area from twice the area projected along `axis`: times |n| / |n_axis|, in double.
+double area_factor(const Vec3FT& n, int axis) {
+  double sq = 0;
+  for (const FT& c : n) sq += CGAL::to_double(c) * CGAL::to_double(c);
+  return std::sqrt(sq) / std::abs(CGAL::to_double(n[axis]));
+}
+
+// Twice the signed area of a contour's projection along `axis` (counter-clockwise seen from +axis
+// is positive).
+FT twice_projected_area(const std::vector<ShadowPoint>& c, int axis) {
+  auto coord = [](const ShadowPoint& p, int k) -> const FT& { return k == 0 ? p.x : k == 1 ? p.y : p.z; };
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  FT sum = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const ShadowPoint& a = c[i];
+    const ShadowPoint& b = c[(i + 1) % c.size()];
+    sum += coord(a, u) * coord(b, v) - coord(b, u) * coord(a, v);
+  }
+  return sum;
+}
+
+// Twice the area of a polygon oriented as seen from the front of a plane with normal n.
+FT twice_area_seen_from_front(const ShadowPolygon& p, const Vec3FT& n, int axis) {
+  FT sum = twice_projected_area(p.outer, axis);
+  for (const auto& h : p.holes) sum += twice_projected_area(h, axis);
+  return CGAL::is_negative(n[axis]) ? -sum : sum;
+}
+
+std::array<std::uint32_t, 3> uv_axes(int axis) { return {std::uint32_t((axis + 1) % 3), std::uint32_t((axis + 2) % 3), std::uint32_t(axis)}; }
+
+// ---------------------------------------------------------------------------------------------
+// The light-independent sources.
+
+struct ModelSources {
+  std::vector<ShadowSource> sources;
+  std::vector<std::vector<std::uint32_t>> face_source;
+  std::vector<std::vector<FT>> face_area2;
+  std::vector<std::vector<double>> face_area;
+  std::vector<double> factor;  // per source: area_factor
+};
+
+ModelSources model_sources(const std::vector<Mesh>& meshes) {
+  ModelSources out;
+  for (std::uint32_t mi = 0; mi < meshes.size(); ++mi) {
+    const Mesh& mesh = meshes[mi];
+    const std::size_t nf = mesh.faces.size();
+    const detail::MeshTopology topo = detail::analyse_mesh(mesh);
+    std::vector<Vec3FT> winding(nf);
+    for (std::uint32_t f = 0; f < nf; ++f) winding[f] = newell_normal(mesh, mesh.faces[f]);
+    auto front = [&](std::uint32_t f) {
+      Vec3FT n = winding[f];
+      if (topo.outward[f] < 0)
+        for (FT& c : n) c = -c;
+      return n;
+    };
+    auto& face_source = out.face_source.emplace_back(nf, 0);
+    auto& face_area2 = out.face_area2.emplace_back(nf, FT(0));
+    auto& face_area = out.face_area.emplace_back(nf, 0.0);
+
+    // A face's contour in the plane of the two coordinates other than `axis`, counter-clockwise
+    // there, on lines of `lines` (one per mesh edge of the group).
+    auto face_contour = [&](std::uint32_t f, int axis, clip::LineTable<K>& lines,
+                            std::unordered_map<std::uint64_t, clip::LineId>& line_of) {
+      const auto ax = uv_axes(axis);
+      const auto& face = mesh.faces[f];
+      const std::size_t n = face.size();
+      const bool reverse = CGAL::is_negative(winding[f][axis]);
+      clip::Contour<K> c;
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t a = face[reverse ? n - 1 - i : i];
+        const std::uint32_t b = face[reverse ? (2 * n - 2 - i) % n : (i + 1) % n];
+        const auto& p = mesh.vertices[a];
+        c.points.push_back(G::point(FT(p[ax[0]]), FT(p[ax[1]])));
+        auto [it, added] = line_of.try_emplace(edge_key(a, b), clip::LineId(lines.size()));
+        if (added) {
+          const auto& q = mesh.vertices[b];
+          lines.push_back({G::point(FT(p[ax[0]]), FT(p[ax[1]])), G::point(FT(q[ax[0]]), FT(q[ax[1]]))});
+        }
+        c.lines.push_back(it->second);
+      }
+      return c;
+    };
+    auto lift_contour = [&](const clip::Contour<K>& c, int axis, const Vec3FT& n, const FT& offset) {
+      const auto ax = uv_axes(axis);
+      std::vector<ShadowPoint> out3;
+      for (const P2& q : c.points) {
+        FT p[3];
+        p[ax[0]] = q.x();
+        p[ax[1]] = q.y();
+        p[ax[2]] = -(n[ax[0]] * q.x() + n[ax[1]] * q.y() + offset) / n[axis];
+        out3.push_back({p[0], p[1], p[2]});
+      }
+      // Counter-clockwise seen from +axis; seen from the front when the normal points that way.
+      if (CGAL::is_negative(n[axis])) std::reverse(out3.begin(), out3.end());
+      return out3;
+    };
+    auto add_source = [&](std::vector<std::uint32_t> faces, const std::vector<clip::Polygon<K>>& uv) {
+      ShadowSource s;
+      s.mesh = mi;
+      s.normal = front(faces.front());
+      s.axis = largest_axis(s.normal);
+      const auto& p0 = mesh.vertices[mesh.faces[faces.front()][0]];
+      s.offset = -(s.normal[0] * FT(p0[0]) + s.normal[1] * FT(p0[1]) + s.normal[2] * FT(p0[2]));
+      for (const auto& polygon : uv) {
+        ShadowPolygon p;
+        p.outer = lift_contour(polygon.outer, s.axis, s.normal, s.offset);
+        for (const auto& h : polygon.holes) p.holes.push_back(lift_contour(h, s.axis, s.normal, s.offset));
+        s.area2 += clip::twice_area(polygon);
+        s.polygons.push_back(std::move(p));
+      }
+      const double factor = area_factor(s.normal, s.axis);
+      s.area = G::to_double(s.area2) / 2 * factor;
+      const auto id = std::uint32_t(out.sources.size());
+      for (std::uint32_t f : faces) face_source[f] = id;
+      s.faces = std::move(faces);
+      out.sources.push_back(std::move(s));
+      out.factor.push_back(factor);
+    };
+
+    std::vector<std::vector<std::uint32_t>> members(nf);
+    for (std::uint32_t f = 0; f < nf; ++f) members[topo.coplanar_group[f]].push_back(f);
+    for (std::uint32_t g = 0; g < nf; ++g) {
+      const auto& faces = members[g];
+      if (faces.empty()) continue;
+      const int axis = largest_axis(winding[faces.front()]);
+      clip::LineTable<K> lines;
+      std::unordered_map<std::uint64_t, clip::LineId> line_of;
+      std::vector<clip::Contour<K>> contours;
+      for (std::uint32_t f : faces) {
+        contours.push_back(face_contour(f, axis, lines, line_of));
+        face_area2[f] = clip::twice_signed_area(contours.back());
+        face_area[f] = G::to_double(face_area2[f]) / 2 * area_factor(winding[f], axis);
+      }
+      if (faces.size() > 1) {
+        try {
+          add_source(faces, clip::merge_polygons<K>(contours, lines));
+          continue;
+        } catch (const clip::ClipError&) {
+          // The group's faces overlap (as in build_sources): keep them apart.
+        }
+      }
+      for (std::size_t i = 0; i < faces.size(); ++i) {
+        clip::Polygon<K> polygon{contours[i], {}};
+        if (mesh.faces[faces[i]].size() > 3)
+          if (auto defect = clip::normalize_polygon(polygon))
+            throw clip::ClipError("face " + std::to_string(mesh.face_index[faces[i]]) + " of " + mesh.file +
+                                  " is not a simple polygon (" + *defect + ")");
+        add_source({faces[i]}, {polygon});
+      }
+    }
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// One directional light.
+
+Vec3FT cross(const Vec3FT& a, const Vec3FT& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+FT dot(const Vec3FT& a, const Vec3FT& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+View light_view_of(const Light& light) {
+  View v;
+  v.name = "light";
+  v.direction = light.vector;
+  v.up = light.vector[0] == 0 && light.vector[1] == 0 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+  return v;
+}
+
+class LightSolver {
+ public:
+  LightSolver(const std::vector<Mesh>& meshes, ModelSources& model, ShadowResult& result, std::size_t light_index,
+              std::size_t light_count, const ShadowOptions& options)
+      : meshes_(meshes), model_(model), result_(result), k_(light_index), light_count_(light_count), options_(options) {}
+
+  void run(const Light& light) {
+    const View view = light_view_of(light);
+    const ViewFrame<K> frame(view);
+    const Vec3FT d{FT(view.direction[0]), FT(view.direction[1]), FT(view.direction[2])};
+    const Vec3FT up{FT(view.up[0]), FT(view.up[1]), FT(view.up[2])};
+    // The axes of ViewFrame (the same formulas), each over its squared length: the inverse map.
+    const Vec3FT X = cross(d, up), Y = cross(X, d), Z{-d[0], -d[1], -d[2]};
+    const FT nx = dot(X, X), ny = dot(Y, Y), nz = dot(Z, Z);
+    for (int i = 0; i < 3; ++i) {
+      inverse_[0][i] = X[i] / nx;
+      inverse_[1][i] = Y[i] / ny;
+      inverse_[2][i] = Z[i] / nz;
+    }
+
+    const std::string name = "light " + std::to_string(k_ + 1) + " of " + std::to_string(light_count_);
+    options_.progress.check();
+    options_.progress.report(name + ": light view");
+    auto mark = Clock::now();
+    SourceOptions source_options;
+    source_options.remove_back_faces = true;
+    source_options.consolidate = true;
+    sources_ = build_sources<K>(meshes_, frame, source_options);
+    result_.times.views += seconds_since(mark);
+    options_.progress.check();
+    options_.progress.report(name + ": sorting " + std::to_string(sources_.polygons.size()) + " polygons");
+    mark = Clock::now();
+    AreaSortOptions sort_options = options_.sort;
+    sort_options.keep_hidden = true;
+    const VisibilityMap<K> map = area_sort<K>(sources_, sort_options);
+    result_.times.sort += seconds_since(mark);
+    options_.progress.check();
+    options_.progress.report(name + ": lit and shadow polygons");
+    mark = Clock::now();
+
+    // Facing of every model source, and its slot for this light.
+    for (auto& s : model_.sources) {
+      const int side = CGAL::sign(dot(s.normal, d));
+      SourceLight sl;
+      sl.facing = side < 0 ? Facing::toward : side == 0 ? Facing::edge_on : Facing::away;
+      if (sl.facing != Facing::toward)
+        for (const auto& p : s.polygons) sl.shadow.push_back({p, {}});
+      s.lights.push_back(std::move(sl));
+    }
+    model_of_.resize(sources_.polygons.size());
+    for (std::size_t i = 0; i < sources_.polygons.size(); ++i) {
+      const auto& sp = sources_.polygons[i];
+      model_of_[i] = model_.face_source[sp.mesh][sp.faces.front()];
+    }
+    auto toward = [&](std::uint32_t area_source) {
+      return model_.sources[model_of_[area_source]].lights[k_].facing == Facing::toward;
+    };
+
+    // The visible fragments: the nearest surface everywhere, indexed for `by`.
+    CGAL::Bbox_2 domain;
+    for (const auto& v : map.visible) domain += detail::box_of(v.polygon);
+    detail::LooseGrid grid(domain, map.visible.size());
+    for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid.insert(i, detail::box_of(map.visible[i].polygon));
+
+    lit_view_.assign(model_.sources.size(), {});
+    for (const auto& v : map.visible)
+      if (toward(v.source)) add_lit(v.polygon, v.source);
+    auto coplanar = [&](std::uint32_t a, std::uint32_t b) {
+      const auto &p = sources_.polygons[a].plane, &q = sources_.polygons[b].plane;
+      return p.a == q.a && p.b == q.b && p.c == q.c;
+    };
+    for (const auto& h : map.hidden) {
+      if (!toward(h.source)) continue;
+      if (!coplanar(h.source, std::uint32_t(h.occluder))) {
+        // Something strictly nearer over all of it.
+        add_shadow(h.polygon, h.source, nearest_faces(h.polygon, map, grid));
+        continue;
+      }
+      // A coplanar tie: the occluder lies in the same plane, but it need not be the nearest
+      // surface there (the sort records the first front that covers a piece). The visible
+      // fragments over the piece are: lit under the coplanar ones, in shadow under the others.
+      std::vector<std::uint32_t> candidates;
+      grid.query(detail::box_of(h.polygon), [&](std::uint32_t id) { candidates.push_back(id); });
+      std::sort(candidates.begin(), candidates.end());
+      std::vector<clip::Polygon<K>> subjects;
+      for (std::uint32_t id : candidates) subjects.push_back(map.visible[id].polygon);
+      auto parts = clip_by(h.polygon, subjects);
+      for (std::size_t i = 0; i < candidates.size(); ++i) {
+        const std::uint32_t over = map.visible[candidates[i]].source;
+        for (auto& piece : parts[i].inside) {
+          if (coplanar(h.source, over)) add_lit(piece, h.source);
+          else add_shadow(piece, h.source, nearest_faces(piece, map, grid));
+        }
+      }
+    }
+    face_areas();
+    if (options_.light_views) light_view(frame, map);
+    result_.times.map_back += seconds_since(mark);
+  }
+
+  // Per face, its lit polygons in model space (union_shadows), or empty when not asked for.
+  std::vector<std::vector<std::vector<clip::Polygon<K>>>> face_lit_uv;
+
+ private:
+  // A light-view piece of a light-view source, lit or in cast shadow.
+  void add_lit(const clip::Polygon<K>& polygon, std::uint32_t area_source) {
+    const std::uint32_t m = model_of_[area_source];
+    SourceLight& sl = model_.sources[m].lights[k_];
+    ShadowPolygon p = lift(polygon, area_source);
+    const FT a2 = twice_area_seen_from_front(p, model_.sources[m].normal, model_.sources[m].axis);
+    sl.lit_area2 += a2;
+    sl.lit_area += G::to_double(a2) / 2 * model_.factor[m];
+    sl.lit.push_back(std::move(p));
+    lit_view_[m].push_back({polygon, area_source});
+  }
+  void add_shadow(const clip::Polygon<K>& polygon, std::uint32_t area_source,
+                  std::vector<std::array<std::uint32_t, 2>> by) {
+    CastShadow shadow;
+    shadow.polygon = lift(polygon, area_source);
+    shadow.by = std::move(by);
+    model_.sources[model_of_[area_source]].lights[k_].shadow.push_back(std::move(shadow));
+  }
+
+  ShadowPoint lift(const P2& q, const DepthPlane<K>& plane) const {
+    const FT x = q.x(), y = q.y();
+    const FT z = plane.a * x + plane.b * y + plane.c;
+    return {x * inverse_[0][0] + y * inverse_[1][0] + z * inverse_[2][0],
+            x * inverse_[0][1] + y * inverse_[1][1] + z * inverse_[2][1],
+            x * inverse_[0][2] + y * inverse_[1][2] + z * inverse_[2][2]};
+  }
+  // Light-view counter-clockwise is counter-clockwise seen from the light, which is the front of a
+  // source facing it: no reversal.
+  ShadowPolygon lift(const clip::Polygon<K>& polygon, std::uint32_t area_source) const {
+    const auto& plane = sources_.polygons[area_source].plane;
+    ShadowPolygon out;
+    for (const P2& q : polygon.outer.points) out.outer.push_back(lift(q, plane));
+    for (const auto& h : polygon.holes) {
+      auto& c = out.holes.emplace_back();
+      for (const P2& q : h.points) c.push_back(lift(q, plane));
+    }
+    return out;
+  }
+
+  // A face of a light-view source as a polygon on the light view's support lines.
+  clip::Polygon<K> face_polygon(std::uint32_t mesh, std::uint32_t f) const {
+    const auto& face = meshes_[mesh].faces[f];
+    const auto& points = sources_.image_points[mesh];
+    const auto& edge_lines = sources_.edge_lines[mesh];
+    auto line_of = [&](std::uint32_t a, std::uint32_t b) {
+      const std::uint64_t key = edge_key(a, b);
+      auto it = std::lower_bound(edge_lines.begin(), edge_lines.end(), key,
+                                 [](const auto& e, std::uint64_t k) { return e.first < k; });
+      return it->second;
+    };
+    clip::Contour<K> c;
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      c.points.push_back(points[face[i]]);
+      c.lines.push_back(line_of(face[i], face[(i + 1) % face.size()]));
+    }
+    if (CGAL::is_negative(clip::twice_signed_area(c))) {
+      std::reverse(c.points.begin(), c.points.end());
+      std::reverse(c.lines.begin(), c.lines.end());
+      std::rotate(c.lines.begin(), c.lines.begin() + 1, c.lines.end());
+    }
+    return {std::move(c), {}};
+  }
+
+  // The faces of a consolidated light-view source as polygons, with a grid of their boxes: made
+  // once per source, when `by` or a per-face area first needs them.
+  struct FaceIndex {
+    std::vector<clip::Polygon<K>> polygons;  // parallel to the source's faces
+    detail::LooseGrid grid;
+  };
+  const FaceIndex& face_index(std::uint32_t area_source) {
+    auto it = face_indices_.find(area_source);
+    if (it != face_indices_.end()) return *it->second;
+    const auto& sp = sources_.polygons[area_source];
+    std::vector<clip::Polygon<K>> polygons;
+    CGAL::Bbox_2 domain;
+    for (std::uint32_t f : sp.faces) {
+      polygons.push_back(face_polygon(sp.mesh, f));
+      domain += detail::box_of(polygons.back());
+    }
+    auto index = std::make_unique<FaceIndex>(FaceIndex{std::move(polygons), detail::LooseGrid(domain, sp.faces.size())});
+    for (std::uint32_t k = 0; k < index->polygons.size(); ++k) index->grid.insert(k, detail::box_of(index->polygons[k]));
+    return *face_indices_.emplace(area_source, std::move(index)).first->second;
+  }
+
+  // The pieces of `subjects` inside `region`, per subject.
+  std::vector<clip::ClipResult<K>> clip_by(const clip::Polygon<K>& region, std::span<const clip::Polygon<K>> subjects) {
+    const clip::ClipRegion<K> r(region, sources_.lines, &crossings_);
+    return clip::clip_list<K>(subjects, r);
+  }
+
+  // The (mesh, face) pairs of the visible fragments over a hidden fragment (positive overlap).
+  std::vector<std::array<std::uint32_t, 2>> nearest_faces(const clip::Polygon<K>& hidden, const VisibilityMap<K>& map,
+                                                          const detail::LooseGrid& grid) {
+    std::vector<std::uint32_t> candidates;
+    grid.query(detail::box_of(hidden), [&](std::uint32_t id) { candidates.push_back(id); });
+    std::sort(candidates.begin(), candidates.end());
+    std::vector<clip::Polygon<K>> subjects;
+    for (std::uint32_t id : candidates) subjects.push_back(map.visible[id].polygon);
+    const auto results = clip_by(hidden, subjects);
+    std::vector<std::array<std::uint32_t, 2>> by;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (results[i].inside.empty()) continue;
+      const auto& sp = sources_.polygons[map.visible[candidates[i]].source];
+      if (sp.faces.size() == 1) {
+        by.push_back({sp.mesh, sp.faces.front()});
+        continue;
+      }
+      const CGAL::Bbox_2 box = [&] {
+        CGAL::Bbox_2 b;
+        for (const auto& piece : results[i].inside) b += detail::box_of(piece);
+        return b;
+      }();
+      const FaceIndex& index = face_index(map.visible[candidates[i]].source);
+      std::vector<std::uint32_t> near;
+      index.grid.query(box, [&](std::uint32_t k) { near.push_back(k); });
+      std::sort(near.begin(), near.end());
+      for (std::uint32_t k : near) {
+        const auto parts = clip_by(index.polygons[k], results[i].inside);
+        if (std::any_of(parts.begin(), parts.end(), [](const auto& r) { return !r.inside.empty(); }))
+          by.push_back({sp.mesh, sp.faces[k]});
+      }
+    }
+    std::sort(by.begin(), by.end());
+    by.erase(std::unique(by.begin(), by.end()), by.end());
+    return by;
+  }
+
+  // Per face: its lit area, from its source's lit fragments (clipped by the face in the light
+  // view where the source has several faces).
+  void face_areas() {
+    auto& lit_area = result_.face_lit_area.emplace_back();
+    auto& lit_area2 = result_.face_lit_area2.emplace_back();
+    for (std::size_t mi = 0; mi < meshes_.size(); ++mi) {
+      lit_area.emplace_back(meshes_[mi].faces.size(), 0.0);
+      lit_area2.emplace_back(meshes_[mi].faces.size(), FT(0));
+    }
+    if (options_.union_shadows) {
+      face_lit_uv.assign(meshes_.size(), {});
+      for (std::size_t mi = 0; mi < meshes_.size(); ++mi) face_lit_uv[mi].resize(meshes_[mi].faces.size());
+    }
+    for (std::uint32_t m = 0; m < model_.sources.size(); ++m) {
+      const ShadowSource& s = model_.sources[m];
+      const SourceLight& sl = s.lights[k_];
+      if (sl.facing != Facing::toward) continue;
+      auto add = [&](std::uint32_t f, const ShadowPolygon& p) {
+        const FT a2 = twice_area_seen_from_front(p, s.normal, s.axis);
+        lit_area2[s.mesh][f] += a2;
+        lit_area[s.mesh][f] += G::to_double(a2) / 2 * model_.factor[m];
+        if (options_.union_shadows) face_lit_uv[s.mesh][f].push_back(uv_polygon(p, s));
+      };
+      if (s.faces.size() == 1) {
+        for (const auto& p : sl.lit) add(s.faces.front(), p);
+        continue;
+      }
+      // Each lit piece clipped by the faces of its light-view source that it can overlap.
+      for (const auto& [polygon, area_source] : lit_view_[m]) {
+        const FaceIndex& index = face_index(area_source);
+        const auto& faces = sources_.polygons[area_source].faces;
+        std::vector<std::uint32_t> near;
+        index.grid.query(detail::box_of(polygon), [&](std::uint32_t k) { near.push_back(k); });
+        std::sort(near.begin(), near.end());
+        const std::span<const clip::Polygon<K>> one(&polygon, 1);
+        for (std::uint32_t k : near) {
+          const auto parts = clip_by(index.polygons[k], one);
+          for (const auto& piece : parts[0].inside) add(faces[k], lift(piece, area_source));
+        }
+      }
+    }
+  }
+
+  // A model-space polygon of source s in its axis plane, counter-clockwise there.
+  static clip::Polygon<K> uv_polygon(const ShadowPolygon& p, const ShadowSource& s) {
+    const auto ax = uv_axes(s.axis);
+    auto coord = [](const ShadowPoint& q, std::uint32_t k) -> const FT& { return k == 0 ? q.x : k == 1 ? q.y : q.z; };
+    const bool reverse = CGAL::is_negative(s.normal[s.axis]);
+    auto contour = [&](const std::vector<ShadowPoint>& c) {
+      std::vector<P2> points;
+      for (const auto& q : c) points.push_back(G::point(coord(q, ax[0]), coord(q, ax[1])));
+      if (reverse) std::reverse(points.begin(), points.end());
+      return points;
+    };
+    clip::Polygon<K> out;
+    out.outer.points = contour(p.outer);
+    for (const auto& h : p.holes) out.holes.push_back({contour(h), {}});
+    return out;
+  }
+
+  void light_view(const ViewFrame<K>& frame, const VisibilityMap<K>& map) {
+    LightView lv;
+    lv.view = frame.view();
+    lv.world_to_view = frame.world_to_view();
+    auto rounded = [&](const clip::Contour<K>& c) {
+      std::vector<std::array<double, 2>> out;
+      for (const P2& q : c.points) out.push_back({frame.rounded(q.x(), 0), frame.rounded(q.y(), 1)});
+      return out;
+    };
+    for (const auto& v : map.visible) {
+      LightViewPolygon p;
+      p.outer = rounded(v.polygon.outer);
+      for (const auto& h : v.polygon.holes) p.holes.push_back(rounded(h));
+      p.source = model_of_[v.source];
+      p.lit = model_.sources[p.source].lights[k_].facing == Facing::toward;
+      lv.polygons.push_back(std::move(p));
+    }
+    result_.views.push_back(std::move(lv));
+  }
+
+  const std::vector<Mesh>& meshes_;
+  ModelSources& model_;
+  ShadowResult& result_;
+  std::size_t k_, light_count_;
+  const ShadowOptions& options_;
+  FT inverse_[3][3];
+  Sources<K> sources_;
+  std::vector<std::uint32_t> model_of_;  // per light-view source: its model source
+  std::vector<std::vector<std::pair<clip::Polygon<K>, std::uint32_t>>> lit_view_;  // per model source: lit pieces
+  clip::CrossingCache<K> crossings_;
+  std::unordered_map<std::uint32_t, std::unique_ptr<FaceIndex>> face_indices_;
+};
+
+}  // namespace
+
+const char* facing_name(Facing facing) {
+  switch (facing) {
+    case Facing::toward: return "toward";
+    case Facing::away: return "away";
+    case Facing::edge_on: return "edge-on";
+  }
+  return "?";
+}
+
+std::optional<std::string> light_defect(const Light& light) {
+  for (double c : light.vector)
+    if (!std::isfinite(c))
+      return light.kind == Light::directional ? "light direction is not finite" : "light position is not finite";
+  if (light.kind == Light::point) return "point lights are not supported yet";
+  if (light.vector == Vec3{0, 0, 0}) return "light direction is zero";
+  return std::nullopt;
+}
+
+ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Light>& lights, const ShadowOptions& options) {
+  for (const Light& light : lights)
+    if (auto defect = light_defect(light)) throw std::invalid_argument(*defect);
+  const auto start = Clock::now();
+  ShadowResult result;
+  options.progress.report("sources of " + std::to_string(meshes.size()) + " mesh(es)");
+  ModelSources model = model_sources(meshes);
+  result.times.sources = seconds_since(start);
+
+  // Per light, per mesh, per face: the lit polygons in the face's source's axis plane.
+  std::vector<std::vector<std::vector<std::vector<clip::Polygon<K>>>>> lit_uv;
+  for (std::size_t k = 0; k < lights.size(); ++k) {
+    LightSolver solver(meshes, model, result, k, lights.size(), options);
+    solver.run(lights[k]);
+    if (options.union_shadows) lit_uv.push_back(std::move(solver.face_lit_uv));
+  }
+
+  if (options.union_shadows) {
+    // The shadow over all lights is the face minus what every light reaches: intersect the lit
+    // regions light by light, in the face's axis plane.
+    options.progress.check();
+    options.progress.report("union of the shadows");
+    const auto mark = Clock::now();
+    for (std::uint32_t mi = 0; mi < meshes.size(); ++mi) {
+      const std::size_t nf = meshes[mi].faces.size();
+      auto& area = result.face_union_shadow_area.emplace_back(nf, 0.0);
+      auto& area2 = result.face_union_shadow_area2.emplace_back(nf, FT(0));
+      for (std::uint32_t f = 0; f < nf; ++f) {
+        const std::uint32_t m = model.face_source[mi][f];
+        std::vector<clip::Polygon<K>> common;
+        if (!lights.empty()) {
+          clip::LineTable<K> lines;
+          auto with_lines = [&](clip::Polygon<K> p) {
+            auto register_lines = [&](clip::Contour<K>& c) {
+              c.lines.clear();
+              for (std::size_t i = 0; i < c.points.size(); ++i) {
+                c.lines.push_back(clip::LineId(lines.size()));
+                lines.push_back({c.points[i], c.points[(i + 1) % c.points.size()]});
+              }
+            };
+            register_lines(p.outer);
+            for (auto& h : p.holes) register_lines(h);
+            return p;
+          };
+          for (const auto& p : lit_uv[0][mi][f]) common.push_back(with_lines(p));
+          for (std::size_t k = 1; k < lights.size() && !common.empty(); ++k) {
+            std::vector<clip::Polygon<K>> next;
+            for (const auto& p : lit_uv[k][mi][f]) {
+              const clip::Polygon<K> region = with_lines(p);
+              const clip::ClipRegion<K> r(region, lines);
+              for (auto& res : clip::clip_list<K>(common, r))
+                for (auto& piece : res.inside) next.push_back(std::move(piece));
+            }
+            common.swap(next);
+          }
+        }
+        FT lit_everywhere = 0;
+        for (const auto& p : common) lit_everywhere += clip::twice_area(p);
+        area2[f] = model.face_area2[mi][f] - lit_everywhere;
+        area[f] = G::to_double(area2[f]) / 2 * model.factor[m];
+      }
+    }
+    result.times.unions = seconds_since(mark);
+  }
+
+  result.sources = std::move(model.sources);
+  result.face_source = std::move(model.face_source);
+  result.face_area = std::move(model.face_area);
+  result.face_area2 = std::move(model.face_area2);
+  result.times.total = seconds_since(start);
+  return result;
+}
+
+std::vector<clip::Polygon<K>> shadows_in_view(const ShadowResult& shadows, const ViewFrame<K>& frame, Sources<K>& sources,
+                                              const VisibilityMap<K>& map) {
+  // Every shadow polygon of a source that the view sees, projected once: a polygon on new support
+  // lines of the view's table (its corners are the exact projections of its model corners).
+  std::map<std::uint32_t, std::vector<std::pair<clip::Polygon<K>, CGAL::Bbox_2>>> projected;
+  auto projection = [&](std::uint32_t model_source) -> const auto& {
+    auto [it, added] = projected.try_emplace(model_source);
+    if (!added) return it->second;
+    auto contour = [&](const std::vector<hidden_line::ShadowPoint>& c) {
+      std::vector<G::Point> points;
+      for (const auto& p : c) {
+        const ViewPoint<K> v = frame.to_view(p.x, p.y, p.z);
+        points.push_back(G::point(v.x, v.y));
+      }
+      clip::Contour<K> out = clip::make_contour<K>(points, sources.lines);
+      sources.line_origins.resize(sources.lines.size());  // auxiliary lines
+      return out;
+    };
+    for (const auto& light : shadows.sources[model_source].lights)
+      for (const auto& shadow : light.shadow) {
+        clip::Polygon<K> polygon{contour(shadow.polygon.outer), {}};
+        for (const auto& h : shadow.polygon.holes) polygon.holes.push_back(contour(h));
+        // Seen edge-on in this view, a polygon has no area: nothing to draw.
+        if (clip::normalize_polygon(polygon)) continue;
+        const CGAL::Bbox_2 box = detail::box_of(polygon);
+        it->second.push_back({std::move(polygon), box});
+      }
+    return it->second;
+  };
+
+  std::vector<clip::Polygon<K>> out;
+  for (const auto& fragment : map.visible) {
+    const auto& sp = sources.polygons[fragment.source];
+    const auto& polygons = projection(shadows.face_source[sp.mesh][sp.faces.front()]);
+    if (polygons.empty()) continue;
+    const CGAL::Bbox_2 box = detail::box_of(fragment.polygon);
+    std::vector<clip::Polygon<K>> subjects;
+    for (const auto& [polygon, b] : polygons)
+      if (CGAL::do_overlap(b, box)) subjects.push_back(polygon);
+    if (subjects.empty()) continue;
+    const clip::ClipRegion<K> region(fragment.polygon, sources.lines);
+    for (auto& result : clip::clip_list<K>(subjects, region))
+      for (auto& piece : result.inside) out.push_back(std::move(piece));
+  }
+  return out;
+}
+
+ShadowResult cast_shadows(const Scene& scene, const std::vector<Light>& lights, const ShadowOptions& options) {
+  return cast_shadows(scene.meshes, lights, options);
+}
+
+}  // namespace hlr::hidden_line

@@ -1,0 +1,293 @@
+// cast_shadows against hand-computed areas (fixtures/shadows/, exact fractions compared exactly)
+// and the independent oracle (shadow_oracle.hpp) on those fixtures, fixtures/scenes, the shared
+// scenes and random grid-snapped boxes and triangle soups under random rational suns.
+#include "shadow_oracle.hpp"
+#include "soup_generator.hpp"
+
+#include <hlr/hidden_line/shadows.hpp>
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+namespace hlr::hltest {
+namespace {
+
+using hidden_line::cast_shadows;
+using hidden_line::Facing;
+using hidden_line::Light;
+using hidden_line::ShadowResult;
+
+std::vector<Mesh> load(const std::string& path) {
+  ImportReport report;
+  return {load_mesh(path, report)};
+}
+
+Light sun(double x, double y, double z) { return {Light::directional, {x, y, z}}; }
+
+std::string joined(const std::vector<std::string>& errors) {
+  std::ostringstream out;
+  for (const auto& e : errors) out << "  " << e << "\n";
+  return out.str();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hand-computed lit areas (README.md of fixtures/shadows says how).
+
+struct Expected {
+  std::uint32_t face;
+  int num, den;  // lit area = num / den
+};
+struct AnalyticCase {
+  const char* file;
+  Vec3 sun;
+  std::vector<Expected> lit;
+  const char* why;
+};
+
+const std::vector<AnalyticCase>& analytic_cases() {
+  static const std::vector<AnalyticCase> cases = {
+      // Ground shadow = hull of the 2 x 2 footprint and its translate by 2 (1, 2) / 4 = (1/2, 1):
+      // 4 + 3 = 7 (the footprint itself is covered by the box); the sides facing the sun are lit.
+      {"box_on_ground.off", {1, 2, -4}, {{0, 393, 1}, {1, 0, 1}, {2, 4, 1}, {3, 4, 1}, {4, 0, 1}, {5, 0, 1}, {6, 4, 1}},
+       "box on a ground plane, oblique sun"},
+      {"box_on_ground.off", {0, 0, -1}, {{0, 396, 1}, {2, 4, 1}, {3, 0, 1}, {4, 0, 1}}, "sun overhead: sides edge-on"},
+      // d = (1, -1, -3): translate 2 (1, -1) / 3; hull area 4 + 2 (2/3 + 2/3) = 20/3.
+      {"box_on_ground.off", {1, -1, -3}, {{0, 1180, 3}, {2, 4, 1}, {3, 0, 1}, {5, 4, 1}, {6, 4, 1}}, "rational shadow area"},
+      // Grazing: the ground edge-on (attached shadow), the top edge-on; the face x = 0 lit.
+      {"box_on_ground.off", {1, 0, 0}, {{0, 0, 1}, {2, 0, 1}, {6, 4, 1}}, "sun grazing the ground exactly"},
+      // Nearly grazing: the shadow, 128 long, leaves the ground at x = 10: 10 x 2 of it.
+      {"box_on_ground.off", {1, 0, -1.0 / 64}, {{0, 380, 1}, {2, 4, 1}, {6, 4, 1}}, "sun 0.9 degrees above the horizon"},
+      // Overhang 1 deep at z = 3 over the wall y = 0: a band z in [2, 3] in shadow.
+      {"overhang.off", {0, 1, -1}, {{2, 12, 1}, {6, 4, 1}, {1, 16, 1}, {3, 0, 1}, {5, 0, 1}}, "overhang over a wall"},
+      // Oblique: the band's left end slides: shadow area int_2^3 (1 + z) dz = 7/2.
+      {"overhang.off", {1, 1, -1}, {{2, 25, 2}, {6, 4, 1}, {5, 16, 1}}, "overhang, oblique sun"},
+      // Ground shadows [-2, 2] x [0, 2] (A) and [-1, 4] x [0, 2] (B) overlap: union 12. B shades
+      // A's east face entirely and its top for x > 1.
+      {"two_boxes.off", {-1, 0, -1}, {{0, 388, 1}, {4, 0, 1}, {2, 2, 1}, {10, 8, 1}, {8, 2, 1}}, "two boxes, shadows overlap"},
+      // Found by the property test: the ground is the first front in the rough order and wins the
+      // coplanar tie with the triangle, though the box is nearer to the light over both. Ground
+      // shadow: 1 + 1 (1 + 1) = 3.
+      {"coplanar_under_box.off", {-1, -1, -1}, {{0, 397, 1}, {7, 0, 1}, {2, 1, 1}}, "coplanar tie under a box"},
+  };
+  return cases;
+}
+
+std::string fixture(const char* name) { return std::string(HLR_SHADOW_FIXTURES_DIR) + "/" + name; }
+
+TEST(ShadowFixtures, LitAreasAreTheHandComputedFractions) {
+  for (const auto& c : analytic_cases()) {
+    SCOPED_TRACE(std::string(c.file) + ": " + c.why);
+    const auto meshes = load(fixture(c.file));
+    const std::vector<Light> lights{sun(c.sun[0], c.sun[1], c.sun[2])};
+    const ShadowResult r = cast_shadows(meshes, lights);
+    for (const auto& e : c.lit) {
+      // Every face of these fixtures is axis-aligned: twice its projected area is twice its area.
+      EXPECT_EQ(r.face_lit_area2[0][0][e.face], hidden_line::ShadowFT(2 * e.num) / hidden_line::ShadowFT(e.den))
+          << "face " << e.face << ": lit " << CGAL::to_double(r.face_lit_area2[0][0][e.face]) / 2 << ", expected "
+          << double(e.num) / e.den;
+      EXPECT_DOUBLE_EQ(r.face_lit_area[0][0][e.face], double(e.num) / e.den);
+    }
+    const auto errors = check_shadows(meshes, lights, r);
+    EXPECT_TRUE(errors.empty()) << joined(errors);
+  }
+}
+
+TEST(ShadowFixtures, FacingAndCastersOfTheBoxOnTheGround) {
+  const auto meshes = load(fixture("box_on_ground.off"));
+  const ShadowResult r = cast_shadows(meshes, {sun(1, 2, -4)});
+  ASSERT_EQ(r.sources.size(), 7u);  // the ground and six box faces, none merged
+  const auto& ground = r.sources[r.face_source[0][0]];
+  EXPECT_EQ(ground.lights[0].facing, Facing::toward);
+  ASSERT_FALSE(ground.lights[0].shadow.empty());
+  for (const auto& s : ground.lights[0].shadow)
+    for (const auto& [mesh, face] : s.by) EXPECT_TRUE(face >= 1 && face <= 6) << face;  // cast by the box
+  EXPECT_EQ(r.sources[r.face_source[0][1]].lights[0].facing, Facing::away);  // the bottom
+  EXPECT_EQ(r.sources[r.face_source[0][4]].lights[0].facing, Facing::away);  // +x
+  // The ground: lit 393 of 400, exactly, and in shadow the rest.
+  EXPECT_EQ(ground.lights[0].lit_area2, hidden_line::ShadowFT(786));
+  EXPECT_EQ(ground.area2, hidden_line::ShadowFT(800));
+}
+
+TEST(ShadowFixtures, ShadowsOfBothBoxesAreNamed) {
+  const auto meshes = load(fixture("two_boxes.off"));
+  const ShadowResult r = cast_shadows(meshes, {sun(-1, 0, -1)});
+  std::set<std::uint32_t> casters;
+  for (const auto& s : r.sources[r.face_source[0][0]].lights[0].shadow)
+    for (const auto& [mesh, face] : s.by) casters.insert(face);
+  EXPECT_TRUE(std::any_of(casters.begin(), casters.end(), [](auto f) { return f >= 1 && f <= 6; }));
+  EXPECT_TRUE(std::any_of(casters.begin(), casters.end(), [](auto f) { return f >= 7 && f <= 12; }));
+}
+
+TEST(ShadowFixtures, SeveralLightsAreSolvedEachOnItsOwn) {
+  const auto meshes = load(fixture("box_on_ground.off"));
+  const std::vector<Light> lights{sun(1, 2, -4), sun(0, 0, -1), sun(1, 0, 0)};
+  const ShadowResult r = cast_shadows(meshes, lights);
+  EXPECT_EQ(r.face_lit_area2[0][0][0], hidden_line::ShadowFT(786));
+  EXPECT_EQ(r.face_lit_area2[1][0][0], hidden_line::ShadowFT(792));
+  EXPECT_EQ(r.face_lit_area2[2][0][0], hidden_line::ShadowFT(0));
+  EXPECT_EQ(r.views.size(), 3u);
+  const auto errors = check_shadows(meshes, lights, r);
+  EXPECT_TRUE(errors.empty()) << joined(errors);
+}
+
+TEST(ShadowFixtures, UnionOfShadowsOverTheLights) {
+  const auto meshes = load(fixture("box_on_ground.off"));
+  // Shadows [0, 4] x [0, 2] and [0, 2] x [0, 4] on the ground: union 8 + 8 - 4 = 12.
+  hidden_line::ShadowOptions options;
+  options.union_shadows = true;
+  const ShadowResult r = cast_shadows(meshes, {sun(1, 0, -1), sun(0, 1, -1)}, options);
+  EXPECT_EQ(r.face_union_shadow_area2[0][0], hidden_line::ShadowFT(24));
+  EXPECT_EQ(r.face_union_shadow_area2[0][2], hidden_line::ShadowFT(0));   // the top: lit under both
+  EXPECT_EQ(r.face_union_shadow_area2[0][4], hidden_line::ShadowFT(8));   // +x: away from the first
+}
+
+TEST(ShadowFixtures, BadLightsAreRefused) {
+  const auto meshes = load(fixture("box_on_ground.off"));
+  EXPECT_THROW(cast_shadows(meshes, {sun(0, 0, 0)}), std::invalid_argument);
+  EXPECT_THROW(cast_shadows(meshes, {sun(std::nan(""), 0, -1)}), std::invalid_argument);
+  EXPECT_THROW(cast_shadows(meshes, {{Light::point, {0, 0, 10}}}), std::invalid_argument);
+}
+
+// The oracle itself: planted errors are found.
+TEST(ShadowOracle, FindsPlantedErrors) {
+  const auto meshes = load(fixture("box_on_ground.off"));
+  const std::vector<Light> lights{sun(1, 2, -4)};
+  const ShadowResult good = cast_shadows(meshes, lights);
+  ASSERT_TRUE(check_shadows(meshes, lights, good).empty());
+  {  // a shadow polygon called lit
+    ShadowResult bad = good;
+    auto& sl = bad.sources[bad.face_source[0][0]].lights[0];
+    ASSERT_FALSE(sl.shadow.empty());
+    sl.lit.push_back(sl.shadow.back().polygon);
+    sl.shadow.pop_back();
+    EXPECT_FALSE(check_shadows(meshes, lights, bad).empty());
+  }
+  {  // a lit polygon dropped
+    ShadowResult bad = good;
+    auto& sl = bad.sources[bad.face_source[0][0]].lights[0];
+    sl.lit.pop_back();
+    EXPECT_FALSE(check_shadows(meshes, lights, bad).empty());
+  }
+  {  // the wrong caster
+    ShadowResult bad = good;
+    for (auto& s : bad.sources[bad.face_source[0][0]].lights[0].shadow) s.by = {{0, 0}};
+    EXPECT_FALSE(check_shadows(meshes, lights, bad).empty());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Every fixture of fixtures/shadows and fixtures/scenes, several suns.
+
+const std::vector<Light>& suns() {
+  static const std::vector<Light> lights{sun(1, 2, -4), sun(-1, 0.5, -1), sun(0, 0, -1), sun(3, -1, -1),
+                                         sun(-1, -1, -1), sun(0.25, 1, 0)};
+  return lights;
+}
+
+TEST(ShadowFixtures, OracleOnEveryFixture) {
+  std::vector<std::string> files;
+  for (const char* dir : {HLR_SHADOW_FIXTURES_DIR, HLR_SCENE_FIXTURES_DIR})
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+      if (e.path().extension() == ".off") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  for (const auto& file : files) {
+    SCOPED_TRACE(file);
+    const auto meshes = load(file);
+    const ShadowResult r = cast_shadows(meshes, suns());
+    const auto errors = check_shadows(meshes, suns(), r);
+    EXPECT_TRUE(errors.empty()) << joined(errors);
+  }
+}
+
+// The shared scenes (one test per scene through the filter; skipped without ../shared/scenes).
+class ShadowScenes : public ::testing::TestWithParam<std::string> {};
+TEST_P(ShadowScenes, Oracle) {
+  const std::string path = std::string(HLR_SHARED_SCENES) + "/" + GetParam();
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
+  const auto meshes = load(path);
+  const std::vector<Light> lights{sun(1, 2, -4), sun(-3, 1, -2)};
+  const ShadowResult r = cast_shadows(meshes, lights);
+  ShadowCheckOptions options;
+  options.max_polygons = 2;
+  const auto errors = check_shadows(meshes, lights, r, options);
+  EXPECT_TRUE(errors.empty()) << joined(errors);
+}
+std::vector<std::string> scene_names(const char* list_text) {
+  std::vector<std::string> out;
+  std::stringstream list(list_text);
+  for (std::string s; std::getline(list, s, ',');) out.push_back(s);
+  return out;
+}
+std::string scene_test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string n = info.param.substr(0, info.param.find('.'));
+  for (char& ch : n)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return n;
+}
+INSTANTIATE_TEST_SUITE_P(Shared, ShadowScenes, ::testing::ValuesIn(scene_names(HLR_SHADOW_SCENES)), scene_test_name);
+INSTANTIATE_TEST_SUITE_P(SharedSoak, ShadowScenes, ::testing::ValuesIn(scene_names(HLR_SHADOW_SOAK_SCENES)),
+                         scene_test_name);
+
+// ---------------------------------------------------------------------------------------------
+// Random grid-snapped boxes on a ground, with a triangle soup, under random rational suns.
+
+Mesh box_mesh(int x0, int y0, int z0, int x1, int y1, int z1) {
+  Mesh m;
+  m.file = "box";
+  m.vertices = {{double(x0), double(y0), double(z0)}, {double(x1), double(y0), double(z0)},
+                {double(x1), double(y1), double(z0)}, {double(x0), double(y1), double(z0)},
+                {double(x0), double(y0), double(z1)}, {double(x1), double(y0), double(z1)},
+                {double(x1), double(y1), double(z1)}, {double(x0), double(y1), double(z1)}};
+  m.faces = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  for (std::uint32_t f = 0; f < 6; ++f) m.face_index.push_back(f);
+  return m;
+}
+
+std::string scene_text(const std::vector<Mesh>& meshes, const Light& l) {
+  std::ostringstream out;
+  out << "sun (" << l.vector[0] << ", " << l.vector[1] << ", " << l.vector[2] << ")\n";
+  for (const auto& m : meshes) out << off_text(m);
+  return out.str();
+}
+
+RC_GTEST_PROP(ShadowProperty, OracleAndAreaIdentity, ()) {
+  std::vector<Mesh> meshes;
+  if (*rc::gen::arbitrary<bool>()) {
+    Mesh ground;
+    ground.file = "ground";
+    ground.vertices = {{-2, -2, 0}, {6, -2, 0}, {6, 6, 0}, {-2, 6, 0}};
+    ground.faces = {{0, 1, 2, 3}};
+    ground.face_index = {0};
+    meshes.push_back(ground);
+  }
+  const int boxes = *rc::gen::inRange(0, 4);
+  for (int b = 0; b < boxes; ++b) {
+    const int x0 = *rc::gen::inRange(0, 4), y0 = *rc::gen::inRange(0, 4), z0 = *rc::gen::inRange(0, 2);
+    const int x1 = x0 + *rc::gen::inRange(1, 3), y1 = y0 + *rc::gen::inRange(1, 3), z1 = z0 + *rc::gen::inRange(1, 4);
+    meshes.push_back(box_mesh(x0, y0, z0, x1, y1, z1));
+  }
+  if (meshes.empty() || *rc::gen::arbitrary<bool>()) {
+    Soup soup;
+    const int n = *rc::gen::inRange(1, 7);
+    soup.triangles = *rc::gen::container<std::vector<Triangle>>(static_cast<std::size_t>(n), gen_triangle());
+    soup.share_vertices = *rc::gen::arbitrary<bool>();
+    meshes.push_back(to_mesh(soup));
+  }
+  const int scale = *rc::gen::element(1, 2, 4, 8);
+  auto c = rc::gen::inRange(-6, 7);
+  const auto d = *rc::gen::suchThat(rc::gen::tuple(c, c, c), [](const auto& t) {
+    return std::get<0>(t) != 0 || std::get<1>(t) != 0 || std::get<2>(t) != 0;
+  });
+  const Light light = sun(double(std::get<0>(d)) / scale, double(std::get<1>(d)) / scale, double(std::get<2>(d)) / scale);
+  RC_TAG(light.vector[2] < 0 ? "sun above" : "sun level or below");
+  const ShadowResult r = cast_shadows(meshes, {light});
+  const auto errors = check_shadows(meshes, {light}, r);
+  if (!errors.empty()) RC_FAIL(joined(errors) + scene_text(meshes, light));
+}
+
+}  // namespace
+}  // namespace hlr::hltest

@@ -1,0 +1,250 @@
+// End-to-end tests of `hlr shadows`: outputs written (JSON checked against the hand-computed
+// areas of fixtures/shadows, the CSV against a golden file, the SVG read back), sun studies, and
+// bad input: one line on stderr, exit code 1 or 2, no output file.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kBinary = HLR_BINARY;
+const fs::path kShadowFixtures = HLR_SHADOW_FIXTURES;
+const fs::path kGolden = HLR_SHADOW_GOLDEN;
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t count_lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+class CliShadows : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string templ = (fs::temp_directory_path() / "hlr-shadows-test-XXXXXX").string();
+    ASSERT_NE(::mkdtemp(templ.data()), nullptr);
+    dir_ = templ;
+    fs::create_directories(dir_ / "out");
+    fs::create_directories(dir_ / "logs");
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  fs::path out(const std::string& name) const { return dir_ / "out" / name; }
+  std::vector<std::string> outputs() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_ / "out")) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  Outcome hlr(std::vector<std::string> args) const {
+    args.insert(args.begin(), kBinary);
+    std::vector<char*> argv;
+    for (auto& s : args) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    const std::string out_log = (dir_ / "logs" / "stdout").string(), err_log = (dir_ / "logs" / "stderr").string();
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, out_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions, 2, err_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = 0;
+    const int rc = posix_spawn(&pid, args[0].c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    Outcome run;
+    if (rc != 0) {
+      ADD_FAILURE() << "cannot start " << args[0];
+      return run;
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    run.out = slurp(out_log);
+    run.err = slurp(err_log);
+    return run;
+  }
+
+  // A failed run: exit `code`, one line on stderr starting with `prefix` and containing `needle`,
+  // nothing in the output directory.
+  void expect_failure(const std::vector<std::string>& args, int code, const std::string& prefix,
+                      const std::string& needle = "") const {
+    SCOPED_TRACE(::testing::PrintToString(args));
+    const Outcome run = hlr(args);
+    EXPECT_EQ(run.exit_code, code) << run.err;
+    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+    EXPECT_EQ(run.err.rfind(prefix, 0), 0u) << run.err;
+    EXPECT_NE(run.err.find(needle), std::string::npos) << run.err;
+    EXPECT_TRUE(outputs().empty()) << run.err;
+  }
+
+  fs::path dir_;
+};
+
+const std::string box() { return (kShadowFixtures / "box_on_ground.off").string(); }
+
+TEST_F(CliShadows, WritesJsonCsvAndSvg) {
+  const Outcome run = hlr({"shadows", box(), "--sun", "1,2,-4", "-o", out("s.json").string(), "-o",
+                           out("s.csv").string(), "-o", out("s.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  EXPECT_EQ(outputs(), (std::vector<std::string>{"s.csv", "s.json", "s.svg"}));
+  const json doc = json::parse(slurp(out("s.json")));
+  EXPECT_EQ(doc.at("format"), "hlr-shadows/1");
+  EXPECT_EQ(doc.at("lights").at(0).at("type"), "directional");
+  EXPECT_EQ(doc.at("lights").at(0).at("direction"), json({1.0, 2.0, -4.0}));
+  ASSERT_EQ(doc.at("sources").size(), 7u);
+  const json& ground = doc.at("sources").at(0);
+  EXPECT_EQ(ground.at("faces"), json({0}));
+  EXPECT_EQ(ground.at("plane"), json({0.0, 0.0, 1.0, 0.0}));
+  EXPECT_EQ(ground.at("area"), 400.0);
+  const json& gl = ground.at("lights").at(0);
+  EXPECT_EQ(gl.at("facing"), "toward");
+  EXPECT_EQ(gl.at("lit_area"), 393.0);
+  ASSERT_FALSE(gl.at("shadow").empty());
+  for (const auto& s : gl.at("shadow")) {
+    EXPECT_FALSE(s.at("by").empty());
+    for (const auto& p : s.at("outer")) EXPECT_EQ(p.at(2), 0.0);  // model coordinates, on the ground
+  }
+  // The bottom faces away: attached shadow, the whole face, nobody to blame.
+  const json& bottom = doc.at("sources").at(1).at("lights").at(0);
+  EXPECT_EQ(bottom.at("facing"), "away");
+  EXPECT_TRUE(bottom.at("lit").empty());
+  EXPECT_EQ(bottom.at("shadow").size(), 1u);
+  EXPECT_TRUE(bottom.at("shadow").at(0).at("by").empty());
+  const std::string svg = slurp(out("s.svg"));
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("<g id=\"light-0\">"), std::string::npos);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+}
+
+TEST_F(CliShadows, CsvIsTheGoldenFile) {
+  // Regenerate: hlr shadows fixtures/shadows/two_boxes.off --sun -1,0,-1 --sun 1,2,-4 --sun 0,0,-1
+  //   --union -o tests/golden/shadows/two_boxes.csv (and review the diff).
+  const Outcome run = hlr({"shadows", (kShadowFixtures / "two_boxes.off").string(), "--sun", "-1,0,-1", "--sun",
+                           "1,2,-4", "--sun", "0,0,-1", "--union", "-o", out("t.csv").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(slurp(out("t.csv")), slurp(kGolden / "two_boxes.csv"));
+}
+
+TEST_F(CliShadows, SunStudyGivesOneLightPerStep) {
+  const Outcome run = hlr({"shadows", box(), "--sun-at", "2026-06-21T09:00+10:00/15:00/PT1H", "--site",
+                           "-33.86,151.21", "--union", "-o", out("d.csv").string(), "-o", out("d.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const json doc = json::parse(slurp(out("d.json")));
+  ASSERT_EQ(doc.at("lights").size(), 7u);
+  for (const auto& l : doc.at("lights")) {
+    EXPECT_GT(l.at("altitude").get<double>(), 0.0);
+    EXPECT_LT(l.at("direction").at(2).get<double>(), 0.0);  // the sun above: light travels down
+  }
+  EXPECT_EQ(doc.at("lights").at(3).at("time"), "2026-06-21T12:00+10:00");
+  // Sydney in June: the sun stands in the north (+Y), so the light travels toward -Y at noon.
+  EXPECT_LT(doc.at("lights").at(3).at("direction").at(1).get<double>(), 0.0);
+  std::istringstream csv(slurp(out("d.csv")));
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_NE(header.find("lit_area_2026-06-21T09:00+10:00"), std::string::npos) << header;
+  EXPECT_NE(header.find("sunlit_fraction_2026-06-21T15:00+10:00"), std::string::npos) << header;
+  EXPECT_NE(header.find("union_shadow_area"), std::string::npos) << header;
+  EXPECT_TRUE(doc.at("sources").at(0).contains("union_shadow_area"));
+}
+
+TEST_F(CliShadows, BadInputIsOneLineAndNoFile) {
+  const std::string o = out("x.json").string();
+  expect_failure({"shadows", box(), "--sun", "0,0,0", "-o", o}, 2, "hlr: --sun 0,0,0: ", "zero");
+  expect_failure({"shadows", box(), "--sun", "1,nan,-1", "-o", o}, 2, "hlr: --sun 1,nan,-1: ", "not finite");
+  expect_failure({"shadows", box(), "--sun", "1,2", "-o", o}, 2, "hlr: --sun 1,2: ");
+  expect_failure({"shadows", box(), "-o", o}, 2, "hlr: ", "no light");
+  expect_failure({"shadows", box(), "--point-light", "0,0,10", "-o", o}, 2, "hlr: --point-light", "not supported yet");
+  expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "-o", o}, 2, "hlr: --sun-at", "--site");
+  expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "--site", "91,0", "-o", o}, 2, "hlr: --site 91,0: ",
+                 "latitude");
+  expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "--site", "0,181", "-o", o}, 2,
+                 "hlr: --site 0,181: ", "longitude");
+  expect_failure({"shadows", box(), "--sun-at", "2026-02-30T09:00", "--site", "0,0", "-o", o}, 2,
+                 "hlr: --sun-at 2026-02-30T09:00: ", "no such date");
+  expect_failure({"shadows", box(), "--sun-at", "noon", "--site", "0,0", "-o", o}, 2, "hlr: --sun-at noon: ");
+  expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00/15:00/PT0M", "--site", "0,0", "-o", o}, 2,
+                 "hlr: --sun-at", "zero");
+  // Midnight in Sydney: below the horizon, an error naming the time.
+  expect_failure({"shadows", box(), "--sun-at", "2026-06-21T00:00+10:00", "--site", "-33.86,151.21", "-o", o}, 1,
+                 "hlr: --sun-at 2026-06-21T00:00+10:00: ", "below the horizon");
+  expect_failure({"shadows", box(), "--sun", "1,2,-4", "-o", out("x.txt").string()}, 1, "hlr: " + out("x.txt").string());
+  expect_failure({"shadows", (dir_ / "missing.off").string(), "--sun", "1,2,-4", "-o", o}, 1,
+                 "hlr: " + (dir_ / "missing.off").string());
+}
+
+TEST_F(CliShadows, OneThreadAndTwoGiveTheSameResult) {
+  // Enough sources for the light view's area sort to run in parallel strips.
+  const fs::path mesh = fs::path(HLR_SHARED_SCENES) / "couplingdown.off";
+  if (!fs::exists(mesh)) GTEST_SKIP() << "no " << mesh;
+  std::string csv[2];
+  json doc[2];
+  for (int t = 0; t < 2; ++t) {
+    const std::string tag = std::to_string(t + 1);
+    const Outcome run = hlr({"shadows", mesh.string(), "--sun", "1,2,-4", "--sun", "0.3,-1,-0.5", "--threads", tag, "-o",
+                             out(tag + ".json").string(), "-o", out(tag + ".csv").string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    csv[t] = slurp(out(tag + ".csv"));
+    doc[t] = json::parse(slurp(out(tag + ".json")));
+    doc[t].erase("stats");
+  }
+  EXPECT_EQ(csv[0], csv[1]);
+  EXPECT_TRUE(doc[0] == doc[1]);
+}
+
+TEST_F(CliShadows, DrawWithSunFillsTheShadowsAndIsTheGoldenFile) {
+  // Regenerate: hlr draw fixtures/shadows/box_on_ground.off --view iso --sun 1,2,-4
+  //   -o tests/golden/shadows/box_on_ground_iso_sun.svg -o tests/golden/shadows/box_on_ground_iso_sun.dxf
+  const Outcome run = hlr({"draw", box(), "--view", "iso", "--sun", "1,2,-4", "-o", out("d.svg").string(), "-o",
+                           out("d.dxf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = slurp(out("d.svg")), dxf = slurp(out("d.dxf"));
+  EXPECT_NE(svg.find("<g id=\"shadows\" fill=\"#d1d1d1\" stroke=\"none\""), std::string::npos);
+  EXPECT_NE(dxf.find("HATCH"), std::string::npos);
+  EXPECT_NE(dxf.find("SHADOW"), std::string::npos);
+  EXPECT_EQ(svg, slurp(kGolden / "box_on_ground_iso_sun.svg"));
+  EXPECT_EQ(dxf, slurp(kGolden / "box_on_ground_iso_sun.dxf"));
+  // Without --sun: no shadow group, no SHADOW layer.
+  ASSERT_EQ(hlr({"draw", box(), "--view", "iso", "-o", out("p.svg").string(), "-o", out("p.dxf").string()}).exit_code, 0);
+  EXPECT_EQ(slurp(out("p.svg")).find("shadows"), std::string::npos);
+  EXPECT_EQ(slurp(out("p.dxf")).find("SHADOW"), std::string::npos);
+}
+
+TEST_F(CliShadows, DrawSunMistakes) {
+  expect_failure({"draw", box(), "--view", "iso", "--sun", "0,0,0", "-o", out("x.svg").string()}, 2, "hlr: --sun 0,0,0: ");
+  expect_failure({"draw", box(), "--view", "iso", "--sun", "1,2,-4", "--kernel", "epick", "-o", out("x.svg").string()},
+                 2, "hlr: --sun 1,2,-4: ", "exact path only");
+}
+
+TEST_F(CliShadows, HelpShowsAnExample) {
+  const Outcome run = hlr({"shadows", "--help"});
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.out.find("hlr shadows fixtures/shadows/box_on_ground.off --sun 1,2,-4"), std::string::npos) << run.out;
+}
+
+}  // namespace

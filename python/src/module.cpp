@@ -20,6 +20,8 @@
 
 #include <pybind11/stl.h>
 
+#include <tbb/global_control.h>
+
 #include <atomic>
 #include <charconv>
 #include <cmath>
@@ -80,6 +82,14 @@ View resolve_view(const std::string& name, const std::optional<std::vector<doubl
   }
   if (auto defect = view_defect(view)) bad_option(direction ? "direction/up" : "view", *defect);
   return view;
+}
+
+// --threads N: oneTBB limited to N threads while the job runs (0: every core). The limit is the
+// process's: jobs run side by side in Python threads share the smallest one.
+std::unique_ptr<tbb::global_control> thread_limit(int threads) {
+  if (threads < 0 || threads > 1024) bad_option("threads", std::to_string(threads) + " is outside [0, 1024]");
+  if (threads == 0) return nullptr;
+  return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
 }
 
 Scene make_scene(const std::vector<std::shared_ptr<ImportedMesh>>& meshes) {
@@ -269,7 +279,7 @@ std::shared_ptr<ImportedMesh> mesh_of_arrays(const std::string& name, const py::
 exporter::LineDrawing draw(const std::vector<std::shared_ptr<ImportedMesh>>& meshes, const std::string& view_name,
                            const std::optional<std::vector<double>>& direction,
                            const std::optional<std::vector<double>>& up, const std::string& kernel, double crease,
-                           bool intersections, const py::object& progress) {
+                           bool intersections, int threads, const py::object& progress) {
   const View view = resolve_view(view_name, direction, up);
   exporter::DrawOptions options;
   options.kernel = kernel_kind(kernel);
@@ -278,6 +288,7 @@ exporter::LineDrawing draw(const std::vector<std::shared_ptr<ImportedMesh>>& mes
   options.intersections = intersections;
   PythonProgress python(progress);
   options.progress = python.progress();
+  auto limit = thread_limit(threads);
   return python.run([&] {
     const Scene scene = make_scene(meshes);
     return exporter::draw_lines(scene, view, options);
@@ -286,7 +297,7 @@ exporter::LineDrawing draw(const std::vector<std::shared_ptr<ImportedMesh>>& mes
 
 std::string surfaces(const std::vector<std::shared_ptr<ImportedMesh>>& meshes, const std::string& view_name,
                      const std::optional<std::vector<double>>& direction, const std::optional<std::vector<double>>& up,
-                     const std::string& kernel, bool exact, bool keep_back_faces, bool consolidation,
+                     const std::string& kernel, bool exact, bool keep_back_faces, bool consolidation, int threads,
                      const py::object& progress) {
   const View view = resolve_view(view_name, direction, up);
   exporter::SurfacesOptions options;
@@ -295,6 +306,7 @@ std::string surfaces(const std::vector<std::shared_ptr<ImportedMesh>>& meshes, c
   options.sources.consolidate = consolidation;
   PythonProgress python(progress);
   options.progress = python.progress();
+  auto limit = thread_limit(threads);
   return python.run([&] {
     const Scene scene = make_scene(meshes);
     return exporter::solve_surfaces(scene, view, options).json(exact);
@@ -389,9 +401,10 @@ PYBIND11_MODULE(_hlrdraw, m) {
           py::arg("hidden"), py::arg("centre_lines"), py::arg("merge_distance"), py::arg("contact_angle"));
 
   m.def("draw", &hlrdraw::draw, py::arg("meshes"), py::arg("view"), py::arg("direction"), py::arg("up"), py::arg("kernel"),
-        py::arg("crease"), py::arg("intersections"), py::arg("progress"));
+        py::arg("crease"), py::arg("intersections"), py::arg("threads"), py::arg("progress"));
   m.def("surfaces", &hlrdraw::surfaces, py::arg("meshes"), py::arg("view"), py::arg("direction"), py::arg("up"),
-        py::arg("kernel"), py::arg("exact"), py::arg("keep_back_faces"), py::arg("consolidation"), py::arg("progress"));
+        py::arg("kernel"), py::arg("exact"), py::arg("keep_back_faces"), py::arg("consolidation"), py::arg("threads"),
+        py::arg("progress"));
   m.def("clip", &hlrdraw::clip, py::arg("subject"), py::arg("clip"), py::arg("subject_name"), py::arg("clip_name"),
         py::arg("kernel"), py::arg("exact"));
 }

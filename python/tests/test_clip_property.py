@@ -5,13 +5,14 @@ and meet at vertices: the degenerate cases an exact clipper must get right. Two 
   - exact: area(inside) + area(outside) = area(subject), in fractions.Fraction from the exact "p/q"
     vertices (exact=True), with the subject's area from its integer input;
   - against shapely (GEOS, floating point): the areas of subject ∩ clip and subject − clip, with a
-    tolerance for shapely's rounding only (the exact areas are rounded once, to compare).
+    tolerance for shapely's rounding only (the exact areas are rounded once, to compare). Not
+    piece by piece: GEOS misjudges rounded pieces along an edge (the @example below).
 The examples are derandomised, so that the suite is the same on every run.
 """
 import math
 from fractions import Fraction
 
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
@@ -51,7 +52,12 @@ def piece_area(piece):
     return area
 
 
-@settings(max_examples=150, deadline=None, derandomize=True, database=None,
+# GEOS 3.11 (shapely 1.8) gets this one half wrong: the outside piece (5/11, 35/11), (1, 1), (1, 4),
+# rounded, lies along the clip's edge from (1, 1) to (0, 5), and GEOS intersects it with the union
+# of the clips as if it were all inside (area 0.818 instead of 0), though its totals are right. So
+# the pieces are checked exactly here, and shapely is asked only for the total areas.
+@example(subject=[(-1, 1), (1, 0), (1, 4)], clips=[[(0, 0), (1, 0), (0, 1)], [(0, 0), (1, 1), (0, 5)]])
+@settings(max_examples=400, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
 @given(subject=simple_polygon(), clips=st.lists(simple_polygon(), min_size=1, max_size=2))
 def test_clip_matches_shapely_and_keeps_the_exact_area_identity(subject, clips):
@@ -60,15 +66,22 @@ def test_clip_matches_shapely_and_keeps_the_exact_area_identity(subject, clips):
     inside = sum((piece_area(p) for p in result["inside"]), Fraction(0))
     outside = sum((piece_area(p) for p in result["outside"]), Fraction(0))
     assert inside + outside == abs(exact_area(subject))
-    assert Fraction(result["inside_area_exact"]) == inside if "inside_area_exact" in result else True
+    stats = result["stats"]
+    assert stats["area_identity"] is True
+    assert (Fraction(stats["inside_area_exact"]), Fraction(stats["outside_area_exact"])) == (inside, outside)
+    # Every output edge lies on the input edge it is tagged with, exactly.
+    inputs = {"subject": [subject], "clip": clips}
+    for piece in result["inside"] + result["outside"]:
+        contour = [(Fraction(x), Fraction(y)) for x, y in piece["outer_exact"]]
+        for k, (role, polygon, ring, edge) in enumerate(piece["outer_edges"]):
+            assert ring == 0  # the inputs have no holes
+            source = inputs[role][polygon]
+            a, b = source[edge], source[(edge + 1) % len(source)]
+            for p in (contour[k], contour[(k + 1) % len(contour)]):
+                assert (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) == 0
 
     shape = Polygon(subject)
     region = unary_union([Polygon(c) for c in clips])
     tolerance = 1e-9 * max(1.0, shape.area)
     assert abs(float(inside) - shape.intersection(region).area) <= tolerance
     assert abs(float(outside) - shape.difference(region).area) <= tolerance
-    # Inside pieces lie in the clip region, outside pieces out of it.
-    for piece in result["inside"]:
-        assert Polygon(piece["outer"], piece.get("holes", [])).difference(region).area <= tolerance
-    for piece in result["outside"]:
-        assert Polygon(piece["outer"], piece.get("holes", [])).intersection(region).area <= tolerance

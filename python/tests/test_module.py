@@ -273,6 +273,9 @@ def test_jobs_run_side_by_side_in_threads_and_report_progress():
     for t in threads:
         t.join()
     assert together == alone
+    assert hlrdraw.draw_file(anchor, view="iso", threads=1).json()["lines"] == alone["iso"]
+    with pytest.raises(hlrdraw.Error):
+        hlrdraw.draw_file(anchor, threads=-1)
 
     stages = []
     hlrdraw.draw_file(anchor, progress=stages.append)

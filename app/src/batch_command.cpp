@@ -5,7 +5,8 @@
 // started in the manifest's folder. So a job's files are the ones `hlr COMMAND ...` writes, by
 // construction; a job that fails, or crashes, is one failed job and the others go on; and each job
 // has the process a single run has (its own memory, --threads, signals, atomic outputs). At most
-// --jobs children run at once: the pool is this process waiting for any child to finish.
+// --jobs children run at once: the pool is this process waiting for any child to finish. A signal
+// that ends the batch is passed on to the running jobs first.
 //
 // stdout gets one line per job as it finishes, "job K ok: OUTPUT..." or "job K failed: PROBLEM"
 // (the job's own one-line error, without "hlr: "); stderr gets the jobs' warnings and a summary.
@@ -18,7 +19,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -31,6 +34,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -56,6 +60,40 @@ std::string own_executable() {
   const fs::path self = fs::read_symlink("/proc/self/exe", ec);
   if (ec) throw std::runtime_error("cannot find the hlr program itself (/proc/self/exe: " + ec.message() + ")");
   return self.string();
+}
+
+// A signal that ends the batch (SIGINT, SIGTERM, SIGHUP) is passed on to the running jobs before
+// the batch ends with it, so that each job stops as a single run does (removing its temporary
+// files) instead of running on unwatched. At a terminal, Ctrl-C reaches the jobs anyway (they are
+// in its process group); a SIGTERM to the batch alone does not. The handler only reads this table
+// and calls kill(): async-signal-safe.
+constexpr std::size_t kMaxRunning = 1024;  // --jobs is at most 1024
+std::atomic<pid_t> g_running[kMaxRunning];
+
+extern "C" void pass_signal_to_jobs(int signo) {
+  for (auto& slot : g_running)
+    if (const pid_t pid = slot.load(); pid > 0) ::kill(pid, signo);
+  std::signal(signo, SIG_DFL);
+  std::raise(signo);
+}
+
+void install_signal_forwarding() {
+  for (int signo : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction previous {};
+    sigaction(signo, nullptr, &previous);
+    if (previous.sa_handler == SIG_IGN) continue;  // started under nohup: keep ignoring
+    struct sigaction action {};
+    action.sa_handler = pass_signal_to_jobs;
+    sigemptyset(&action.sa_mask);
+    sigaction(signo, &action, nullptr);
+  }
+}
+
+void set_running(pid_t pid, bool running) {
+  for (auto& slot : g_running) {
+    pid_t expected = running ? 0 : pid;
+    if (slot.compare_exchange_strong(expected, running ? pid : 0)) return;
+  }
 }
 
 struct Running {
@@ -86,6 +124,7 @@ class Pool {
       if (it == running_.end()) continue;  // not a job (nothing else is started; be safe)
       const Running done = it->second;
       running_.erase(it);
+      set_running(pid, false);
       finish(done, status);
     }
     return failed_;
@@ -127,8 +166,22 @@ class Pool {
     posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);  // the summary: results are files
     posix_spawn_file_actions_adddup2(&actions, ::fileno(err), 2);
     posix_spawn_file_actions_addchdir_np(&actions, manifest_.folder.c_str());
+    // The signals that end the batch wait while a child starts, until its pid is in the table the
+    // handler reads; the child starts with none blocked.
+    sigset_t ending, previous, none;
+    sigemptyset(&ending);
+    for (int signo : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&ending, signo);
+    sigemptyset(&none);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    posix_spawnattr_setsigmask(&attributes, &none);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
+    ::pthread_sigmask(SIG_BLOCK, &ending, &previous);
     pid_t pid = 0;
-    const int rc = ::posix_spawn(&pid, program_.c_str(), &actions, nullptr, argv.data(), environ);
+    const int rc = ::posix_spawn(&pid, program_.c_str(), &actions, &attributes, argv.data(), environ);
+    if (rc == 0) set_running(pid, true);
+    ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) {
       std::fclose(err);
@@ -207,6 +260,7 @@ int run(const BatchOptions& options) {
     return kExitOk;
   }
   const auto start = std::chrono::steady_clock::now();
+  install_signal_forwarding();
   const std::size_t failed = Pool(manifest, options).run();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cerr << "hlr batch: " << manifest.jobs.size() - failed << " of " << manifest.jobs.size() << " jobs ok, " << failed

@@ -673,25 +673,14 @@ typename Geometry<K>::FT twice_signed_area(const Contour<K>& contour) {
   using G = Geometry<K>;
   const auto& pts = contour.points;
   const std::size_t n = pts.size();
-  if constexpr (G::exact_constructions) {
-    // Sum in the exact number type: a lazy sum over many terms would build a deep DAG.
-    using ET = typename G::FT::Exact_type;
-    ET sum = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto& p = pts[i];
-      const auto& q = pts[(i + 1) % n];
-      sum += CGAL::exact(p.x()) * CGAL::exact(q.y()) - CGAL::exact(q.x()) * CGAL::exact(p.y());
-    }
-    return typename G::FT(sum);
-  } else {
-    typename G::FT sum = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto& p = pts[i];
-      const auto& q = pts[(i + 1) % n];
-      sum += G::x(p) * G::y(q) - G::x(q) * G::y(p);
-    }
-    return sum;
+  // Summed in G::Exact: a lazy sum over many terms would build a deep DAG.
+  typename G::Exact sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& p = pts[i];
+    const auto& q = pts[(i + 1) % n];
+    sum += G::exact(G::x(p)) * G::exact(G::y(q)) - G::exact(G::x(q)) * G::exact(G::y(p));
   }
+  return typename G::FT(sum);
 }
 
 template <class K>

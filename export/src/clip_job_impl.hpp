@@ -29,16 +29,6 @@ struct Piece {
   std::int64_t clip = -1;     // inside pieces: index of the clip polygon it is inside of
 };
 
-// FT's exact number type when it is a lazy number, else FT itself.
-template <class FT, bool lazy>
-struct ExactTypeOf {
-  using type = FT;
-};
-template <class FT>
-struct ExactTypeOf<FT, true> {
-  using type = typename FT::Exact_type;
-};
-
 template <class K>
 class ClipRun {
  public:
@@ -175,18 +165,10 @@ class ClipRun {
                      [](const Piece<K>& a, const Piece<K>& b) { return a.subject < b.subject; });
   }
 
-  // A sum of many FT values. With the exact kernel it is kept in the exact number type: a sum of
-  // lazy numbers is a chain as deep as it is long, and evaluating a chain of 10^5 lazy additions
-  // exactly (which an equality test of equal values always does) recurses deep enough to overflow
-  // the stack.
+  // A sum of many FT values, in G::Exact (see there).
   struct Sum {
-    static constexpr bool exact = G::exact_constructions;
-    using Value = typename ExactTypeOf<FT, exact>::type;
-    Value value = Value(0);
-    void add(const FT& v) {
-      if constexpr (exact) value += CGAL::exact(v);
-      else value += v;
-    }
+    typename G::Exact value = 0;
+    void add(const FT& v) { value += G::exact(v); }
     FT get() const { return FT(value); }
     bool operator==(const Sum& other) const { return value == other.value; }
   };

@@ -43,7 +43,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
       std::optional<std::array<FT, 3>> delta;  // b - a, made once per line where an inner point needs it
       auto at = [&](const FT& t) -> Point3 {
         if constexpr (G::exact_constructions) {
-          const auto [lo, hi] = CGAL::to_interval(t);
+          const auto [lo, hi] = G::interval(t);
           if (lo == hi && lo == 0) return end_point(line.a);
           if (lo == hi && lo == 1) return end_point(line.b);
           if (!delta) delta = {line.b.x - line.a.x, line.b.y - line.a.y, line.b.z - line.a.z};
@@ -59,10 +59,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
       for (std::size_t k = 0; k < line.pieces.size(); ++k) {
         const auto& piece = line.pieces[k];
         DrawingPiece& p = out[k];
-        bool shared = false;
-        // The member, which compares representations: the free CGAL::identical compares the two
-        // objects' addresses for a Lazy_exact_nt (its template beats the Handle overload).
-        if constexpr (G::exact_constructions) shared = k > 0 && piece.t0.identical(line.pieces[k - 1].t1);
+        const bool shared = k > 0 && G::same_number(piece.t0, line.pieces[k - 1].t1);
         if (shared) {
           p.a = out[k - 1].b;
           p.t0 = out[k - 1].t1;

@@ -59,8 +59,9 @@ json polygon_json(const clip::Polygon<K>& polygon, const Rounder<K>& r, bool exa
 template <class K>
 std::array<double, 4> orthonormal_plane(const hidden_line::DepthPlane<K>& plane, const ViewFrame<K>& frame) {
   // With x' = sx x, y' = sy y, z' = sz z: -a sx x - b sy y + sz z - c = 0.
-  const double n[4] = {-CGAL::to_double(plane.a) * frame.scale(0), -CGAL::to_double(plane.b) * frame.scale(1),
-                       frame.scale(2), -CGAL::to_double(plane.c)};
+  using G = Geometry<K>;
+  const double n[4] = {-G::rough_double(plane.a) * frame.scale(0), -G::rough_double(plane.b) * frame.scale(1),
+                       frame.scale(2), -G::rough_double(plane.c)};
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   return {n[0] / len, n[1] / len, n[2] / len, n[3] / len};
 }

@@ -34,10 +34,10 @@ std::vector<double> rough_depths(const std::vector<SourcePolygon<K>>& polygons) 
   std::vector<double> nearest(polygons.size());
   for (std::size_t s = 0; s < polygons.size(); ++s) {
     const auto& sp = polygons[s];
-    const double a = CGAL::to_double(sp.plane.a), b = CGAL::to_double(sp.plane.b), c = CGAL::to_double(sp.plane.c);
+    const double a = G::rough_double(sp.plane.a), b = G::rough_double(sp.plane.b), c = G::rough_double(sp.plane.c);
     double z = -HUGE_VAL;
     for (const auto& p : sp.polygon.outer.points)
-      z = std::max(z, a * CGAL::to_double(G::x(p)) + b * CGAL::to_double(G::y(p)) + c);
+      z = std::max(z, a * G::rough_double(G::x(p)) + b * G::rough_double(G::y(p)) + c);
     nearest[s] = z;
   }
   return nearest;
@@ -183,14 +183,14 @@ class AreaSort {
     const LineOrigin aux;
     std::vector<P> corners;
     const bool by_x = G::sign(db) != 0 &&
-                      (G::sign(da) == 0 || std::abs(CGAL::to_double(db)) >= std::abs(CGAL::to_double(da)));
+                      (G::sign(da) == 0 || std::abs(G::rough_double(db)) >= std::abs(G::rough_double(da)));
     if (by_x) {
       // The line crosses the verticals x = x0 and x = x1 at y = -(da x + dc) / db.
       const double x0 = widen(box.xmin(), -1), x1 = widen(box.xmax(), 1);
       const FT y0 = -(da * FT(x0) + dc) / db, y1 = -(da * FT(x1) + dc) / db;
       const P l0 = G::point(FT(x0), y0), l1 = G::point(FT(x1), y1);
-      const double lo = widen(std::min({box.ymin(), CGAL::to_double(y0), CGAL::to_double(y1)}), -1);
-      const double hi = widen(std::max({box.ymax(), CGAL::to_double(y0), CGAL::to_double(y1)}), 1);
+      const double lo = widen(std::min({box.ymin(), G::rough_double(y0), G::rough_double(y1)}), -1);
+      const double hi = widen(std::max({box.ymax(), G::rough_double(y0), G::rough_double(y1)}), 1);
       if (G::sign(db) > 0) corners = {l0, l1, G::point(x1, hi), G::point(x0, hi)};  // nearer above
       else corners = {l0, G::point(x0, lo), G::point(x1, lo), l1};                   // nearer below
     } else {
@@ -198,8 +198,8 @@ class AreaSort {
       const double y0 = widen(box.ymin(), -1), y1 = widen(box.ymax(), 1);
       const FT x0 = -(db * FT(y0) + dc) / da, x1 = -(db * FT(y1) + dc) / da;
       const P l0 = G::point(x0, FT(y0)), l1 = G::point(x1, FT(y1));
-      const double lo = widen(std::min({box.xmin(), CGAL::to_double(x0), CGAL::to_double(x1)}), -1);
-      const double hi = widen(std::max({box.xmax(), CGAL::to_double(x0), CGAL::to_double(x1)}), 1);
+      const double lo = widen(std::min({box.xmin(), G::rough_double(x0), G::rough_double(x1)}), -1);
+      const double hi = widen(std::max({box.xmax(), G::rough_double(x0), G::rough_double(x1)}), 1);
       if (G::sign(da) > 0) corners = {l0, G::point(hi, y0), G::point(hi, y1), l1};  // nearer right
       else corners = {l0, l1, G::point(lo, y1), G::point(lo, y0)};                   // nearer left
     }

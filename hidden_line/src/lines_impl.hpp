@@ -55,7 +55,7 @@ struct ImageLine {
   // to them.
   P at(const FT& t) const {
     if constexpr (G::exact_constructions) {
-      const auto [lo, hi] = CGAL::to_interval(t);
+      const auto [lo, hi] = G::interval(t);
       if (lo == hi && (lo == 0 || lo == 1)) return lo == 0 ? a : b;
     }
     return G::point(G::x(a) + t * dx, G::y(a) + t * dy);
@@ -399,7 +399,6 @@ template <class K>
 LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
                           const VisibilityMap<K>& map, const std::vector<IntersectionSegment>& intersections,
                           const LineOptions& options) {
-  using FT = typename Geometry<K>::FT;
   detail::Classifier<K> classifier(meshes, sources, map);
   // The lines first, each with the sources it lies in (`own`, sorted); then their pieces, in
   // parallel over chunks of lines: each line is classified on its own, so the result does not
@@ -432,14 +431,10 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
     }
   }
   if (options.intersections) {
-    auto to_view = [&](const IntersectionSegment::Point3& p) {
-      if constexpr (std::is_same_v<FT, CGAL::Epeck::FT>) return frame.to_view(p.x(), p.y(), p.z());
-      else return frame.to_view(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    };
     for (const IntersectionSegment& s : intersections) {
       FeatureLine<K> line;
-      line.a = to_view(s.a);
-      line.b = to_view(s.b);
+      line.a = frame.to_view(s.a);
+      line.b = frame.to_view(s.b);
       line.kind = FeatureKind::intersection;
       line.mesh = s.mesh_a;
       line.meeting_degrees = s.meeting_degrees;

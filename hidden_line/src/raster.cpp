@@ -138,11 +138,8 @@ struct RasterDrawing::Impl {
     if (!options.intersections) return;
     for (const IntersectionSegment& s : intersections) {
       RasterLine r;
-      auto at = [&](const IntersectionSegment::Point3& p) {
-        return frame.to_view(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-      };
-      r.line.a = at(s.a);
-      r.line.b = at(s.b);
+      r.line.a = frame.to_view(s.a);
+      r.line.b = frame.to_view(s.b);
       r.a = {r.line.a.x / frame.scale(0), r.line.a.y / frame.scale(1), r.line.a.z / frame.scale(2)};
       r.b = {r.line.b.x / frame.scale(0), r.line.b.y / frame.scale(1), r.line.b.z / frame.scale(2)};
       r.line.kind = FeatureKind::intersection;

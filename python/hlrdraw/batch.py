@@ -7,11 +7,11 @@ The manifest is the one `hlr batch` runs (DESIGN.md, "The library and its entry 
 are read and checked by `hlr batch MANIFEST --list`, so both runners take the same manifests and
 run the same command lines. Each job is one Dask task that runs the hlr program on the worker:
 
-  - the client reads the job's meshes and sends them with the task; the worker writes them into a
-    temporary folder at the paths the manifest spells (relative to the manifest's folder; a path
-    that leaves that folder gets a folder of its own, keeping its file name), runs `hlr COMMAND
-    ...` there and sends the output files back; the client writes them where the manifest says,
-    atomically. So workers need no shared file system, and a job's files are the ones `hlr`
+  - the client reads the meshes and sends them to the cluster (once each, however many jobs draw
+    them); a task writes its job's meshes into a temporary folder at the paths the manifest spells
+    (relative to the manifest's folder; a path that leaves that folder gets a folder of its own,
+    keeping its file name), runs `hlr COMMAND ...` there and sends the output files back; the
+    client writes them where the manifest says, atomically. So workers need no shared file system, and a job's files are the ones `hlr`
     writes for the same command line (hlr-lines/1 and hlr-surfaces/1 JSON equal apart from
     "stats" and, for paths out of the manifest's folder, the spelling of "input.files");
   - a job that fails is reported with hlr's one-line message and the others go on; the exit
@@ -81,7 +81,7 @@ def _inside(path):
 
 def run_job(job, meshes, hlr=None):
     """One job on a worker (a Dask task): `meshes` maps each mesh path as the manifest spells it to
-    the file's bytes. Returns {"job", "ok", "outputs": {path: bytes}, "problem", "warnings"}; never
+    the file's bytes (Dask hands the task the bytes of the futures the client scattered). Returns {"job", "ok", "outputs": {path: bytes}, "problem", "warnings"}; never
     raises for a failed job."""
     result = {"job": job["job"], "ok": False, "outputs": {}, "problem": "", "warnings": []}
     try:
@@ -147,17 +147,20 @@ def run(manifest, scheduler="local", workers=None, threads=0, hlr=None, out=sys.
     failed = 0
     try:
         futures = []
+        uploaded = {}  # mesh path -> its bytes on the cluster, sent once for all the jobs that draw it
         for job in jobs:
             meshes = {}
             problem = None
             for index in job["meshes"]:
                 path = job["arguments"][index]
-                try:
-                    with open(os.path.join(folder, path), "rb") as f:
-                        meshes[path] = f.read()
-                except OSError as e:
-                    problem = f"{path}: cannot open ({e.strerror})"
-                    break
+                if path not in uploaded:
+                    try:
+                        with open(path if os.path.isabs(path) else os.path.join(folder, path), "rb") as f:
+                            uploaded[path] = client.scatter(f.read())
+                    except OSError as e:
+                        problem = f"{path}: cannot open ({e.strerror})"
+                        break
+                meshes[path] = uploaded[path]
             if problem:
                 failed += 1
                 print(f"job {job['job']} failed: {problem}", file=out, flush=True)

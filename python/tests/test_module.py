@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import hlrdraw
-from conftest import CLI_PARTS, CLIP, PARTS, SCENES, run_hlr
+from conftest import CLI_PARTS, CLIP, PARTS, SCENES, SOURCE_DIR, run_hlr
 
 CUBE_VERTICES = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0],
                           [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], dtype=float)
@@ -289,3 +289,14 @@ def test_jobs_run_side_by_side_in_threads_and_report_progress():
 
     with pytest.raises(Stop):
         hlrdraw.draw_file(anchor, progress=stop)
+
+
+def test_the_readmes_example_runs(tmp_path, monkeypatch):
+    with open(os.path.join(SOURCE_DIR, "README.md"), encoding="utf-8") as f:
+        readme = f.read()
+    section = readme[readme.index("\n## Python\n"):]
+    code = section[section.index("```python\n") + len("```python\n"):section.index("\n```\n")]
+    os.symlink(os.path.join(SOURCE_DIR, "fixtures"), tmp_path / "fixtures")
+    monkeypatch.chdir(tmp_path)
+    exec(compile(code, "README.md", "exec"), {})
+    assert (tmp_path / "cube.svg").read_bytes().startswith(b"<?xml")

@@ -27,7 +27,7 @@ using LineId = std::uint32_t;
 
 // A line given by two input points. Fragment edges lie on such lines, and new vertices are only
 // ever constructed as the intersection of two of them, never of already-constructed segments.
-template <class K>
+template <GeometryKernel K>
 struct SupportLine {
   typename Geometry<K>::Point a, b;
 };
@@ -36,7 +36,7 @@ using LineTable = std::vector<SupportLine<K>>;
 
 // A closed contour: points[i] -> points[i+1 mod n] lies on line lines[i]. The first point is not
 // repeated at the end.
-template <class K>
+template <GeometryKernel K>
 struct Contour {
   std::vector<typename Geometry<K>::Point> points;
   std::vector<LineId> lines;
@@ -51,7 +51,7 @@ bool corner_on_line(const Contour<K>& c, std::size_t i, LineId line) {
   return c.lines[i] == line || c.lines[i == 0 ? c.size() - 1 : i - 1] == line;
 }
 
-template <class K>
+template <GeometryKernel K>
 struct Polygon {
   Contour<K> outer;
   std::vector<Contour<K>> holes;

@@ -13,6 +13,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <atomic>
+#include <concepts>
+#include <cstdint>
+#include <utility>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -104,6 +107,16 @@ struct PredicateStats {
 template <class K>
 struct Geometry;
 
+// FT's exact number type when it is a lazy number, else FT itself.
+template <class FT, class = void>
+struct ExactTypeOf {
+  using type = FT;
+};
+template <class FT>
+struct ExactTypeOf<FT, std::void_t<typename FT::Exact_type>> {
+  using type = typename FT::Exact_type;
+};
+
 template <class K>
 struct CgalGeometry {
   using FT = typename K::FT;
@@ -119,6 +132,13 @@ struct CgalGeometry {
   // Copies of one Epeck point. (CGAL::identical would compare the two objects' addresses here: its
   // Handle overload loses to the generic template for Point_2.)
   static bool same(const Point& a, const Point& b) { return exact_constructions && identity(a) == identity(b); }
+  // Copies of one lazy number, known without arithmetic; false on kernels of plain values. (The
+  // member compares representations; the free CGAL::identical would compare the two objects'
+  // addresses for a Lazy_exact_nt, its template beating the Handle overload.)
+  static bool same_number(const FT& a, const FT& b) {
+    if constexpr (exact_constructions) return a.identical(b);
+    else return false;
+  }
 
   static Point point(double x, double y) { return Point(x, y); }
   static Point point(const FT& x, const FT& y) requires(!std::is_same_v<FT, double>) { return Point(x, y); }
@@ -258,6 +278,19 @@ struct CgalGeometry {
       return CGAL::to_double(v);
     }
   }
+  // A double near v, for candidate filters and rough orders only, never for a decision: a bound
+  // made from it must be widened (on the exact kernel it is the approximation Epeck keeps).
+  static double rough_double(const FT& v) { return CGAL::to_double(v); }
+  // An interval of doubles that contains v: where [lo, hi] settles a question, no exact
+  // arithmetic is needed.
+  static std::pair<double, double> interval(const FT& v) { return CGAL::to_interval(v); }
+  // v as a number that sums without building lazy nodes: a long sum of lazy numbers is a chain as
+  // deep as it is long, and evaluating it exactly recurses deep enough to overflow the stack.
+  using Exact = std::conditional_t<exact_constructions, typename ExactTypeOf<FT>::type, FT>;
+  static decltype(auto) exact(const FT& v) {
+    if constexpr (exact_constructions) return CGAL::exact(v);
+    else return v;
+  }
   static CGAL::Bbox_2 bbox(const Point& p) { return p.bbox(); }
 
   static std::string exact_string(const FT& v) {
@@ -304,9 +337,49 @@ struct Geometry<DoubleKernel> {
   static int sign_above(double a, double b, double c, double px, double py, double z) {
     return sign(a * px + b * py + c - z);
   }
+  static bool same_number(double, double) { return false; }
   static double to_double(double v) { return v; }
+  static double rough_double(double v) { return v; }
+  static std::pair<double, double> interval(double v) { return {v, v}; }
+  using Exact = double;
+  static double exact(double v) { return v; }
   static CGAL::Bbox_2 bbox(const Point& p) { return {p.x, p.y, p.x, p.y}; }
   static std::string exact_string(double v) { return exact_string_of_double(v); }
 };
+
+// What an algorithm may ask of a kernel: every geometric question and construction hlr's
+// algorithms make goes through these operations of Geometry<K>, so that a kernel is a choice of
+// number model and nothing else (the clipper, the area sort and the line classifier are templates
+// over K and reach numbers only here).
+template <class K>
+concept GeometryKernel = requires(const typename Geometry<K>::Point& p, const typename Geometry<K>::FT& v, double d) {
+  typename Geometry<K>::Exact;
+  { Geometry<K>::exact_constructions } -> std::convertible_to<bool>;
+  // points
+  { Geometry<K>::point(d, d) } -> std::same_as<typename Geometry<K>::Point>;
+  { Geometry<K>::x(p) } -> std::convertible_to<typename Geometry<K>::FT>;
+  { Geometry<K>::y(p) } -> std::convertible_to<typename Geometry<K>::FT>;
+  { Geometry<K>::identity(p) } -> std::same_as<std::uintptr_t>;
+  { Geometry<K>::same_number(v, v) } -> std::same_as<bool>;
+  { Geometry<K>::bbox(p) } -> std::same_as<CGAL::Bbox_2>;
+  // predicates (signs and comparisons as -1, 0, +1)
+  { Geometry<K>::sign(v) } -> std::same_as<int>;
+  { Geometry<K>::orientation(p, p, p) } -> std::same_as<int>;
+  { Geometry<K>::compare_x(p, p) } -> std::same_as<int>;
+  { Geometry<K>::compare_y(p, p) } -> std::same_as<int>;
+  { Geometry<K>::compare_xy(p, p) } -> std::same_as<int>;
+  { Geometry<K>::equal(p, p) } -> std::same_as<bool>;
+  { Geometry<K>::sign_above(v, v, v, v, v, v) } -> std::same_as<int>;
+  // constructions from support lines
+  { Geometry<K>::line_intersection(p, p, p, p) } -> std::same_as<typename Geometry<K>::Point>;
+  { Geometry<K>::midpoint(p, p) } -> std::same_as<typename Geometry<K>::Point>;
+  // numbers out: rounded once for output, rough for filters, enclosed, exact for long sums
+  { Geometry<K>::to_double(v) } -> std::same_as<double>;
+  { Geometry<K>::rough_double(v) } -> std::same_as<double>;
+  { Geometry<K>::interval(v) } -> std::same_as<std::pair<double, double>>;
+  { Geometry<K>::exact(v) } -> std::convertible_to<typename Geometry<K>::Exact>;
+  { Geometry<K>::exact_string(v) } -> std::same_as<std::string>;
+};
+static_assert(GeometryKernel<ExactKernel> && GeometryKernel<EpickKernel> && GeometryKernel<DoubleKernel>);
 
 }  // namespace hlr

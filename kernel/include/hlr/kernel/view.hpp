@@ -71,7 +71,7 @@ struct ViewPoint {
 };
 
 // The exact, unnormalized view basis for kernel K.
-template <class K>
+template <GeometryKernel K>
 class ViewFrame {
  public:
   using FT = typename Geometry<K>::FT;
@@ -97,6 +97,13 @@ class ViewFrame {
   ViewPoint<K> to_view(const FT& px, const FT& py, const FT& pz) const {
     const FT q[3] = {px, py, pz};
     return {dot(0, q), dot(1, q), dot(2, q)};
+  }
+
+  // An exact model-space point (a constructed one: a penetration line's end). The inexact
+  // kernels take it rounded, which is what makes them inexact.
+  ViewPoint<K> to_view(const ExactKernel::Point_3& p) const {
+    if constexpr (std::is_same_v<FT, ExactKernel::FT>) return to_view(p.x(), p.y(), p.z());
+    else return to_view(Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
   }
 
   // |X|, |Y|, |Z| in double: divide a view coordinate by these to get model units.

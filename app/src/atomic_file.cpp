@@ -1,9 +1,9 @@
 #include "atomic_file.hpp"
 
 #include "errors.hpp"
+#include "interrupt.hpp"
 
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -15,41 +15,6 @@
 
 namespace hlr::app {
 namespace {
-
-// The temporary file a signal handler must remove. One at a time: the program writes one output
-// file at a time. Kept in a static buffer so that the handler only calls async-signal-safe code.
-char g_pending_temp[4096];
-volatile std::sig_atomic_t g_pending = 0;
-
-extern "C" void remove_pending_and_reraise(int signo) {
-  if (g_pending) ::unlink(g_pending_temp);
-  std::signal(signo, SIG_DFL);
-  std::raise(signo);
-}
-
-void install_signal_handlers() {
-  static bool installed = false;
-  if (installed) return;
-  installed = true;
-  for (int signo : {SIGINT, SIGTERM, SIGHUP}) {
-    struct sigaction action {};
-    action.sa_handler = remove_pending_and_reraise;
-    sigemptyset(&action.sa_mask);
-    struct sigaction previous {};
-    sigaction(signo, nullptr, &previous);
-    if (previous.sa_handler == SIG_IGN) continue;  // e.g. started under nohup: keep ignoring
-    sigaction(signo, &action, nullptr);
-  }
-}
-
-void set_pending(const std::string& temp) {
-  if (temp.size() < sizeof g_pending_temp) {
-    std::memcpy(g_pending_temp, temp.c_str(), temp.size() + 1);
-    g_pending = 1;
-  }
-}
-
-void clear_pending() { g_pending = 0; }
 
 std::string cannot_write(int error) { return std::string("cannot write (") + std::strerror(error) + ")"; }
 
@@ -75,11 +40,10 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   std::vector<char> buffer(templ.begin(), templ.end());
   buffer.push_back('\0');
 
-  install_signal_handlers();
   fd_ = ::mkstemp(buffer.data());
   if (fd_ < 0) throw UserError(path_, cannot_write(errno));
   temp_path_ = buffer.data();
-  set_pending(temp_path_);
+  register_temporary(temp_path_.c_str());
 
   // mkstemp creates the file 0600; give the output the permissions a plain create would give it.
   mode_t mask = ::umask(0);
@@ -97,10 +61,10 @@ void AtomicFile::discard() noexcept {
     fd_ = -1;
   }
   if (!temp_path_.empty()) {
+    unregister_temporary(temp_path_.c_str());
     ::unlink(temp_path_.c_str());
     temp_path_.clear();
   }
-  clear_pending();
 }
 
 void AtomicFile::fail(int error) {
@@ -110,6 +74,7 @@ void AtomicFile::fail(int error) {
 
 void AtomicFile::write(std::string_view data) {
   if (fd_ < 0) throw UserError(path_, "cannot write (file is already closed)");
+  stop_token().check();  // a stopped run writes no more
   while (!data.empty()) {
     ssize_t n = ::write(fd_, data.data(), data.size());
     if (n < 0) {
@@ -127,8 +92,8 @@ void AtomicFile::commit() {
   fd_ = -1;
   if (::close(fd) != 0) fail(errno);
   if (::rename(temp_path_.c_str(), path_.c_str()) != 0) fail(errno);
+  unregister_temporary(temp_path_.c_str());
   temp_path_.clear();
-  clear_pending();
   committed_ = true;
 }
 

@@ -5,7 +5,9 @@
 // The exact drawing is the reference (docs/STABILITY.md says why, case by case).
 #include "atomic_file.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
 #include "line_options.hpp"
+#include "progress_display.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/export/check.hpp>
@@ -56,9 +58,11 @@ int run(CheckOptions options) {
     json_file = std::make_unique<AtomicFile>(options.json);
   }
 
-  const Scene scene = read_scene(options.scene.meshes);
+  const Deadline deadline(options.scene.limits.timeout);
+  ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
+  const Scene scene = read_scene(options.scene.meshes, options.scene.limits);
   exporter::DrawOptions job = options.lines;
-  job.progress = stage_lines(scene.input.faces >= 10000);
+  job.progress = display.progress();
   const exporter::SceneIntersections intersections(scene, job.intersections, job.progress);  // for every method
   const exporter::LineDrawing reference = exporter::draw_lines(scene, *view, job, &intersections);
 
@@ -100,6 +104,8 @@ int run(CheckOptions options) {
   if (json_file) json_file->write(exporter::check_json(report));
   if (diff_file) diff_file->commit();
   if (json_file) json_file->commit();
+  display.stage("");
+  print_warnings(scene);
 
   std::cout << "hlr check: " << scene.input.faces << " faces, view " << view->name << ", " << reference.stats.lines
             << " lines, " << number(reference.visible_length() + reference.hidden_length())

@@ -1,6 +1,9 @@
 // `hlr clip SUBJECT.json CLIP.json -o OUT.json [--exact] [--kernel exact|epick|double]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
+#include "progress_display.hpp"
+#include "scene_options.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/export/polygons.hpp>
@@ -16,6 +19,7 @@ struct ClipOptions {
   std::string subject, clip, output;
   bool exact = false;
   std::string kernel = "exact";
+  RunLimits limits;
 };
 
 std::string plural(std::size_t n, const char* one, const char* many) {
@@ -23,6 +27,7 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 }
 
 int run(const ClipOptions& options) {
+  const Deadline deadline(options.limits.timeout);
   const auto subjects = exporter::read_polygons_file(options.subject);
   const auto clips = exporter::read_polygons_file(options.clip);
   exporter::ClipOptions job;
@@ -30,11 +35,16 @@ int run(const ClipOptions& options) {
   job.subject_name = options.subject;
   job.clip_name = options.clip;
   job.exact_values = options.exact;
+  job.stop = stop_token();
   // Fail early on an output that cannot be written, before the clipping work.
   AtomicFile output(options.output);
+  ProgressDisplay display(ProgressDisplay::mode_for(options.limits.progress));
+  display.stage("clipping " + plural(subjects.size(), "subject polygon", "subject polygons") + " by " +
+                plural(clips.size(), "clip polygon", "clip polygons"));
   const exporter::ClipOutcome outcome = exporter::clip_polygons(subjects, clips, job);
   output.write(exporter::clip_json(outcome));
   output.commit();
+  display.stage("");
 
   using exporter::number_text;
   std::cout << "hlr clip: " << plural(outcome.subjects, "subject polygon", "subject polygons") << ", "
@@ -72,6 +82,7 @@ Subcommand add_clip_command(CLI::App& parent) {
   cmd->add_flag("--exact", options->exact,
                 "also write every vertex as exact rationals: \"outer_exact\", \"holes_exact\" (\"p/q\" strings)");
   add_kernel_option(*cmd, options->kernel);
+  add_limit_options(*cmd, options->limits, /*faces=*/false);
   cmd->footer(
       "Writes subject ∩ clip (\"inside\") and subject − clip (\"outside\"), each output edge tagged with\n"
       "the input edge it lies on, and prints the areas with the check area(inside) + area(outside) =\n"

@@ -2,7 +2,9 @@
 //            options: style_options.hpp] [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
 #include "line_options.hpp"
+#include "progress_display.hpp"
 #include "style_options.hpp"
 #include "subcommand.hpp"
 
@@ -51,12 +53,15 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   std::vector<std::unique_ptr<AtomicFile>> files;
   for (const auto& out : options.outputs) files.push_back(std::make_unique<AtomicFile>(out));
 
-  const Scene scene = read_scene(options.scene.meshes);
+  const Deadline deadline(options.scene.limits.timeout);
+  ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
+  display.stage("reading " + std::to_string(options.scene.meshes.size()) +
+                (options.scene.meshes.size() == 1 ? " mesh" : " meshes"));
+  const Scene scene = read_scene(options.scene.meshes, options.scene.limits);
   const double read = seconds_since(start);
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;
-  const bool progress = scene.input.faces >= 10000;
-  job.progress = stage_lines(progress);
+  job.progress = display.progress();
   job.free_at_exit = true;  // the run ends with the outputs
   exporter::RasterRun raster;
   exporter::LineDrawing drawing;
@@ -95,9 +100,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   drawing.merge_distance_mm = style.merge_distance;
   drawing.contact_segments = sheet.merged.contact;
   drawing.contact_degrees = style.contact_degrees;
-  if (progress)
-    std::cerr << "hlr: " << merged << " near-coincident drawing segments merged (within " << style.merge_distance
-              << " mm on the sheet)\n";
+  display.stage("writing " + std::to_string(files.size()) + (files.size() == 1 ? " output" : " outputs"));
   for (const bool json : {false, true}) {
     for (std::size_t i = 0; i < files.size(); ++i) {
       if ((formats[i] == Format::json) != json) continue;
@@ -117,9 +120,8 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   }
   for (auto& file : files) file->commit();
   const double written = write_seconds();
-  if (progress)
-    std::cerr << "hlr: " << files.size() << (files.size() == 1 ? " output" : " outputs") << " written in " << written
-              << " s; " << drawing.times.total + written << " s in all\n";
+  display.stage("");
+  print_warnings(scene);
 
   const auto& st = drawing.stats;
   auto kind_count = [&](FeatureKind k) { return st.by_kind[static_cast<int>(k)]; };

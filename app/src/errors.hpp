@@ -22,5 +22,6 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitInputError = 1;  // bad input or unwritable output: a UserError
 inline constexpr int kExitUsage = 2;       // bad command line
 inline constexpr int kExitContract = 3;    // a result breaks a promise of the exact path (a bug)
+inline constexpr int kExitTimeout = 124;   // --timeout reached (as timeout(1) exits); signals: 128 + N
 
 }  // namespace hlr::app

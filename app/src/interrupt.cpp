@@ -13,6 +13,7 @@ namespace {
 std::atomic<bool> g_stop = false;
 volatile std::sig_atomic_t g_signal = 0;
 std::atomic<int> g_jobs = 0;
+std::atomic<double> g_timeout_reached = 0;
 std::array<std::atomic<const char*>, 256> g_temporaries{};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<const char*>::is_always_lock_free,
               "the signal handler needs lock-free atomics");
@@ -88,7 +89,7 @@ Deadline::Deadline(double seconds) : seconds_(seconds) {
     std::unique_lock lock(mutex_);
     const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds_);
     if (!wake_.wait_until(lock, until, [this] { return done_; })) {
-      passed_ = true;
+      g_timeout_reached.store(seconds_);
       g_stop.store(true);
     }
   });
@@ -104,10 +105,7 @@ Deadline::~Deadline() {
   timer_.join();
 }
 
-bool Deadline::passed() const {
-  std::lock_guard lock(const_cast<std::mutex&>(mutex_));
-  return passed_;
-}
+double timeout_reached() { return g_timeout_reached.load(); }
 
 void set_current_stage(std::string_view stage) {
   std::lock_guard lock(g_stage_mutex);

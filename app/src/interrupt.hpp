@@ -50,17 +50,17 @@ class Deadline {
   ~Deadline();
   Deadline(const Deadline&) = delete;
   Deadline& operator=(const Deadline&) = delete;
-  bool passed() const;
-  double seconds() const { return seconds_; }
 
  private:
   double seconds_;
   std::mutex mutex_;
   std::condition_variable wake_;
   bool done_ = false;
-  bool passed_ = false;
   std::thread timer_;
 };
+
+// The --timeout that stopped the run (seconds), or 0.
+double timeout_reached();
 
 // The stage a run is in, for the one line that says where it stopped.
 void set_current_stage(std::string_view stage);

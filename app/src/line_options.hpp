@@ -1,5 +1,5 @@
 // What the line-drawing subcommands (draw, sheet, check) share: the options of the line job
-// (exporter::draw_lines, hlr/export/jobs.hpp) and the progress lines on stderr.
+// (exporter::draw_lines, hlr/export/jobs.hpp).
 #pragma once
 
 #include "scene_options.hpp"
@@ -11,7 +11,5 @@ namespace hlr::app {
 // --crease DEG and --no-intersections, into `options`.
 void add_line_options(CLI::App& cmd, exporter::DrawOptions& options);
 
-// Progress that prints each stage as a line "hlr: STAGE" on stderr when `shown`, else nothing.
-exporter::Progress stage_lines(bool shown);
 
 }  // namespace hlr::app

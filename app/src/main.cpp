@@ -2,8 +2,10 @@
 // (clip_command.cpp, ...) and registers itself through subcommand.hpp.
 //
 // Exit codes: 0 success, 1 bad input or unwritable output (one line on stderr, "hlr: FILE: problem"),
-// 2 bad command line, 3 internal error (a broken promise of the engine).
+// 2 bad command line, 3 internal error (a broken promise of the engine), 124 --timeout, 128 + N
+// stopped by signal N (interrupt.hpp).
 #include "errors.hpp"
+#include "interrupt.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/kernel/kernel.hpp>
@@ -11,6 +13,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
+#include <cstdio>
 #include <iostream>
 #include <new>
 #include <string>
@@ -49,8 +53,26 @@ void print_predicate_stats() {
 
 }  // namespace
 
+// The one line of a run stopped by a signal or by --timeout, and its exit code.
+int report_stop() {
+  using namespace hlr::app;
+  const std::string stage = current_stage();
+  const std::string where = stage.empty() ? "" : " while " + stage;
+  if (const int signo = stop_signal()) {
+    const char* name = signo == SIGINT ? "interrupted (SIGINT)" : signo == SIGTERM ? "terminated (SIGTERM)" : "hung up (SIGHUP)";
+    std::cerr << "hlr: " << name << where << "; no file written" << std::endl;
+    return 128 + signo;
+  }
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", timeout_reached());
+  std::cerr << "hlr: --timeout " << seconds << ": the run stopped after " << seconds << " s" << where
+            << "; no file written" << std::endl;
+  return kExitTimeout;
+}
+
 int main(int argc, char** argv) {
   using namespace hlr::app;
+  install_signal_handlers();
 
   CLI::App app{"hlr: an exact hidden-line engine for CAD drawings.", "hlr"};
   app.set_version_flag("--version", "hlr " HLR_VERSION);
@@ -74,7 +96,8 @@ int main(int argc, char** argv) {
       "  hlr batch catalogue.json --jobs 4\n"
       "\n"
       "Run 'hlr SUBCOMMAND --help' for a subcommand's options; formats are in docs/FORMATS.md.\n"
-      "Exit status: 0 success, 1 bad input or unwritable output, 2 bad command line, 3 internal error.");
+      "Exit status: 0 success, 1 bad input or unwritable output, 2 bad command line, 3 internal error,\n"
+      "124 --timeout reached, 128 + N stopped by signal N (130: SIGINT); a stopped run writes no file.");
 
   // The first word that is not an option names the subcommand (the top level has no option that
   // takes a value). CLI11 would call an unknown one an unexpected argument, or say that a
@@ -111,9 +134,12 @@ int main(int argc, char** argv) {
   for (const auto& command : commands) {
     if (!command.app->parsed()) continue;
     try {
+      const JobScope job;  // from here a signal stops the work through the library's stop flag
       const int status = command.run();
       print_predicate_stats();
       return status;
+    } catch (const hlr::Cancelled&) {
+      return report_stop();
     } catch (const UsageError& e) {
       std::cerr << "hlr: " << one_line(e.what()) << std::endl;
       return kExitUsage;

@@ -48,15 +48,11 @@ void ProgressDisplay::stage(std::string_view what) {
   set_current_stage(what);
   std::lock_guard lock(mutex_);
   stage_ = what;
-  if (mode_ == Mode::lines) std::cerr << ("hlr: " + std::string(what) + '\n') << std::flush;
-}
-
-void ProgressDisplay::note(std::string_view line) {
-  if (mode_ == Mode::quiet) return;
-  std::lock_guard lock(mutex_);
-  if (mode_ == Mode::live && shown_) std::cerr << "\r\033[K";
-  std::cerr << ("hlr: " + std::string(line) + '\n') << std::flush;
-  if (mode_ == Mode::live && shown_) show_live(stage_);
+  if (mode_ == Mode::lines && !what.empty()) std::cerr << ("hlr: " + std::string(what) + '\n') << std::flush;
+  if (mode_ == Mode::live && what.empty() && shown_) {  // the work is done: the summary follows
+    std::cerr << "\r\033[K" << std::flush;
+    shown_ = false;
+  }
 }
 
 exporter::Progress ProgressDisplay::progress() {

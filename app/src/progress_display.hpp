@@ -31,10 +31,9 @@ class ProgressDisplay {
 
   // The Progress a job reports to (and polls the run's stop flag through).
   exporter::Progress progress();
-  // A stage of the command itself ("view front (1 of 3)", "writing 3 outputs").
+  // A stage of the command itself ("view front (1 of 3)", "writing 3 outputs"); "" when the
+  // work is done and the summary follows.
   void stage(std::string_view what);
-  // A line that stays (a finding worth keeping in a log): printed in every mode but quiet.
-  void note(std::string_view line);
 
  private:
   void show_live(const std::string& what);  // with mutex_ held

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <iostream>
+#include <limits>
 
 namespace hlr::app {
 
@@ -30,6 +31,22 @@ void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel) {
       ->capture_default_str()
       ->type_name("N");
   if (kernel) add_kernel_option(cmd, options.kernel);
+  add_limit_options(cmd, options.limits);
+}
+
+void add_limit_options(CLI::App& cmd, RunLimits& limits, bool faces) {
+  cmd.add_option("--timeout", limits.timeout,
+                 "stop the run after SECONDS of wall clock (exit 124, no file written; 0: no limit)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str()
+      ->type_name("SECONDS");
+  if (faces)
+    cmd.add_option("--max-faces", limits.max_faces, "refuse a scene of more than N faces, before solving it")
+        ->check(CLI::Range(std::size_t(1), std::numeric_limits<std::size_t>::max()))
+        ->capture_default_str()
+        ->type_name("N");
+  cmd.add_flag("--progress", limits.progress,
+               "one line per stage on stderr even when it is not a terminal (a terminal shows one live line)");
 }
 
 std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options) {
@@ -58,10 +75,17 @@ std::optional<View> resolve_view(const SceneOptions& options) {
   return view;
 }
 
-Scene read_scene(const std::vector<std::string>& paths) {
+Scene read_scene(const std::vector<std::string>& paths, const RunLimits& limits) {
   Scene scene = hlr::load_scene(paths);
-  for (const auto& w : scene.warnings) std::cerr << "hlr: warning: " << w << '\n';
+  if (scene.input.faces > limits.max_faces)
+    throw UserError(paths.size() == 1 ? paths.front() : paths.front() + " and " + std::to_string(paths.size() - 1) + " more",
+                    std::to_string(scene.input.faces) + " faces, more than --max-faces " +
+                        std::to_string(limits.max_faces) + " (give a larger --max-faces to solve it)");
   return scene;
+}
+
+void print_warnings(const Scene& scene) {
+  for (const auto& w : scene.warnings) std::cerr << "hlr: warning: " << w << '\n';
 }
 
 bool has_extension(const std::string& path, const std::string& extension) {

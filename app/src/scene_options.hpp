@@ -19,15 +19,27 @@
 
 namespace hlr::app {
 
+// Every subcommand's limits: --timeout, --max-faces (commands that read meshes) and --progress.
+struct RunLimits {
+  double timeout = 0;  // seconds of wall clock; 0: none
+  // About 35 GB of memory at the 7 KB per face measured at 1M faces (docs/BENCHMARKS.md): beyond
+  // it a run would fail for memory after a long time, so it is refused at once.
+  std::size_t max_faces = 5'000'000;
+  bool progress = false;  // one line per stage on stderr when it is not a terminal
+};
+void add_limit_options(CLI::App& cmd, RunLimits& limits, bool faces = true);
+
 struct SceneOptions {
   std::vector<std::string> meshes;
   std::string view = "iso";
   std::vector<double> direction, up;
   std::string kernel = "exact";
   int threads = 0;  // 0: every core
+  RunLimits limits;
 };
 
-// MESH... (positional), --view, --dir, --up, --threads and, unless `kernel` is false, --kernel.
+// MESH... (positional), --view, --dir, --up, --threads, the limits and, unless `kernel` is
+// false, --kernel.
 void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel = true);
 
 // Limits oneTBB to options.threads for as long as the returned object lives (0: no limit). The
@@ -37,8 +49,13 @@ std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options);
 // The view the options name, or nothing after a one-line usage error on stderr.
 std::optional<View> resolve_view(const SceneOptions& options);
 
-// Reads every mesh (hlr::load_scene: throws ImportError) and prints the importer's warnings.
-Scene read_scene(const std::vector<std::string>& paths);
+// Reads every mesh (hlr::load_scene: throws ImportError) and refuses a scene beyond
+// limits.max_faces (UserError).
+Scene read_scene(const std::vector<std::string>& paths, const RunLimits& limits);
+
+// The importer's warnings, printed once a run has succeeded (a failed run prints one line: its
+// error).
+void print_warnings(const Scene& scene);
 
 // Whether a path ends in `extension` (".svg"), in any letter case.
 bool has_extension(const std::string& path, const std::string& extension);

@@ -7,7 +7,9 @@
 // by the export library (hlr/export/sheet.hpp) and written in every format asked for.
 #include "atomic_file.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
 #include "line_options.hpp"
+#include "progress_display.hpp"
 #include "style_options.hpp"
 #include "subcommand.hpp"
 
@@ -26,6 +28,7 @@ struct SheetOptions {
   std::string projection = "third";
   std::string kernel = "exact";
   int threads = 0;
+  RunLimits limits;
   exporter::DrawOptions lines;
   StyleOptions style;
   exporter::SheetFields fields;
@@ -97,17 +100,18 @@ int run(const SheetOptions& options) {
   std::vector<std::unique_ptr<AtomicFile>> files;
   for (const auto& out : options.outputs) files.push_back(std::make_unique<AtomicFile>(out));
 
-  const Scene scene = read_scene(options.meshes);
+  const Deadline deadline(options.limits.timeout);
+  ProgressDisplay display(ProgressDisplay::mode_for(options.limits.progress));
+  display.stage("reading " + std::to_string(options.meshes.size()) + (options.meshes.size() == 1 ? " mesh" : " meshes"));
+  const Scene scene = read_scene(options.meshes, options.limits);
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;
-  const bool progress = scene.input.faces >= 10000;
-  job.progress = stage_lines(progress);
+  job.progress = display.progress();
   const exporter::SceneIntersections intersections(scene, job.intersections, job.progress);  // found once, for all views
   std::vector<exporter::LineDrawing> drawings;
   drawings.reserve(views->size());
   for (std::size_t i = 0; i < views->size(); ++i) {
-    if (progress)
-      std::cerr << "hlr: view " << (*views)[i].name << " (" << i + 1 << " of " << views->size() << ")\n";
+    display.stage("view " + (*views)[i].name + " (" + std::to_string(i + 1) + " of " + std::to_string(views->size()) + ")");
     drawings.push_back(exporter::draw_lines(scene, (*views)[i], job, &intersections));
   }
   const double solved = seconds_since(start);
@@ -146,6 +150,8 @@ int run(const SheetOptions& options) {
   }
   std::cout << "  outputs written in " << written << " s (" << solved + written << " s in all)\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
+  display.stage("");
+  print_warnings(scene);
   return kExitOk;
 }
 
@@ -184,6 +190,7 @@ Subcommand add_sheet_command(CLI::App& parent) {
       ->capture_default_str()
       ->type_name("METHOD");
   add_line_options(*cmd, options->lines);
+  add_limit_options(*cmd, options->limits);
   options->style.sheet = "A3";
   add_style_options(*cmd, options->style);
   cmd->add_option("--title", options->fields.title, "title block: title")->type_name("TEXT");

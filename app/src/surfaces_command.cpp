@@ -1,6 +1,8 @@
 // `hlr surfaces MESH... --view V -o OUT.json|OUT.svg [--kernel exact|epick|double] [--exact]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
+#include "interrupt.hpp"
+#include "progress_display.hpp"
 #include "scene_options.hpp"
 #include "subcommand.hpp"
 
@@ -36,14 +38,14 @@ int solve(const SurfacesOptions& options, const View& view) {
   std::vector<Format> formats;
   for (const auto& out : options.outputs) formats.push_back(format_of(out));
 
-  const Scene scene = read_scene(options.scene.meshes);
+  const Deadline deadline(options.scene.limits.timeout);
+  ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
+  const Scene scene = read_scene(options.scene.meshes, options.scene.limits);
   exporter::SurfacesOptions job;
   parse_kernel_kind(options.scene.kernel, job.kernel);
   job.sources.remove_back_faces = !options.keep_back_faces;
   job.sources.consolidate = !options.no_consolidation;
-  // Large scenes take seconds: say what is happening.
-  if (scene.input.faces >= 20000)
-    job.progress.stage = [](std::string_view what) { std::cerr << "hlr surfaces: " << what << '\n'; };
+  job.progress = display.progress();
   const exporter::SurfacesSolution solution = exporter::solve_surfaces(scene, view, job, seconds_since(start));
 
   for (std::size_t i = 0; i < options.outputs.size(); ++i) {
@@ -51,6 +53,8 @@ int solve(const SurfacesOptions& options, const View& view) {
     file.write(formats[i] == Format::json ? solution.json(options.exact) : solution.svg());
     file.commit();
   }
+  display.stage("");
+  print_warnings(scene);
   const auto& st = solution.summary().sources;
   const auto& sort = solution.summary().sort;
   std::cout << "hlr surfaces: " << scene.input.faces << " faces, view " << view.name << ", kernel "

@@ -119,6 +119,7 @@ class ClipRun {
     for (std::size_t p = 0; p < owner.size(); ++p) owner[p] = static_cast<std::uint32_t>(p);
 
     for (std::size_t j = 0; j < clips_.size() && !remaining.empty(); ++j) {
+      options_.stop.check();
       std::vector<clip::ClipResult<K>> results;
       try {
         clip::ClipRegion<K> region(clips_[j], lines_);

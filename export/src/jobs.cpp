@@ -14,6 +14,7 @@ hidden_line::LineOptions line_options(const DrawOptions& options) {
   hidden_line::LineOptions lines;
   lines.features.crease_degrees = options.crease;
   lines.intersections = options.intersections;
+  lines.stop = options.progress.stop;
   return lines;
 }
 
@@ -47,22 +48,26 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   // A stop asked for while the intersections are found beside waits for them: the task group
   // must not be destroyed while its task runs.
   auto check = [&] {
-    if (progress.cancelled && progress.cancelled()) {
+    try {
+      progress.check();
+    } catch (const Cancelled&) {
       if (beside) beside->wait();
-      throw Cancelled();
+      throw;
     }
   };
   check();
   auto mark = std::chrono::steady_clock::now();
   progress.report(std::to_string(scene.input.faces) + " faces; building polygons (" +
                   kernel_name(kernel_kind_of<K>()) + ")");
-  solution->sources = hidden_line::build_sources<K>(scene.meshes, frame);
+  hidden_line::SourceOptions sources;
+  sources.stop = progress.stop;
+  solution->sources = hidden_line::build_sources<K>(scene.meshes, frame, sources);
   times.sources = seconds_since(mark);
   check();
   progress.report("sorting " + std::to_string(solution->sources.polygons.size()) + " polygons");
   mark = std::chrono::steady_clock::now();
   // A drawing needs only the visible polygons: what the front pieces hide is not kept.
-  solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false});
+  solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false, .stop = progress.stop});
   times.sort = seconds_since(mark);
   if (beside) beside->wait();
   times.intersections = intersections.seconds();
@@ -74,7 +79,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   times.lines = seconds_since(mark);
   check();
   mark = std::chrono::steady_clock::now();
-  solution->segments = hidden_line::drawing_segments<K>(solution->lines);
+  solution->segments = hidden_line::drawing_segments<K>(solution->lines, progress.stop);
   times.precedence = seconds_since(mark);
   // The stages' own times overlap where the intersections were found beside the polygons.
   times.total = seconds_since(begin) + (found_before ? times.intersections : 0);
@@ -82,7 +87,8 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   // The output stage starts here: the one rounding of the exact result, then the exact solution
   // freed (or left to the process's exit: see DrawOptions::free_at_exit).
   mark = std::chrono::steady_clock::now();
-  LineDrawing drawing = make_drawing<K>(scene.input, frame, kernel_kind_of<K>(), solution->lines, solution->segments);
+  LineDrawing drawing =
+      make_drawing<K>(scene.input, frame, kernel_kind_of<K>(), solution->lines, solution->segments, progress.stop);
   if (options.free_at_exit) (void)solution.release();  // not a leak: see DrawOptions::free_at_exit
   else solution.reset();
   times.write = seconds_since(mark);

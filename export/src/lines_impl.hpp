@@ -20,7 +20,7 @@ namespace hlr::exporter {
 template <class K>
 LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, KernelKind kernel,
                          const hidden_line::LineSet<K>& lines,
-                         const std::vector<hidden_line::DrawnSegment<K>>& segments) {
+                         const std::vector<hidden_line::DrawnSegment<K>>& segments, StopToken stop) {
   using G = Geometry<K>;
   using FT = typename G::FT;
   LineDrawing d;
@@ -34,6 +34,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   for (std::size_t i = 0; i < lines.lines.size(); ++i) first[i + 1] = first[i] + lines.lines[i].pieces.size();
   d.pieces.resize(first.back());
   hidden_line::parallel_chunks(lines.lines.size(), 64, [&](const auto& range) {
+    stop.check();
     for (std::size_t index = range.begin(); index != range.end(); ++index) {
       const auto& line = lines.lines[index];
       if (line.pieces.empty()) continue;
@@ -81,6 +82,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
 
   d.segments.resize(segments.size());
   hidden_line::parallel_chunks(segments.size(), 256, [&](const auto& range) {
+    stop.check();
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const auto& s = segments[i];
       d.segments[i] = {{frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)},

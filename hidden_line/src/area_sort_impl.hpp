@@ -288,6 +288,7 @@ class AreaSort {
     std::vector<Polygon> subjects;
     for (std::size_t slot = 0; slot < slots.size(); ++slot) {
       while (!slots[slot].empty()) {
+        options_.stop.check_every(fronts_, 64);
         const std::uint32_t id = slots[slot].back();
         slots[slot].pop_back();
         live[id] = 0;
@@ -355,6 +356,7 @@ class AreaSort {
   AreaSortOptions options_;
   clip::CrossingCache<K> crossings_;
   std::size_t depth_ = 0;
+  std::size_t fronts_ = 0;  // front polygons taken, for polling options_.stop
   VisibilityMap<K> map_;
 };
 

@@ -128,7 +128,7 @@ double angle_between(const EK::Vector_3& n, const EK::Vector_3& m) {
 }
 }  // namespace
 
-std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes) {
+std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes, StopToken stop) {
   std::vector<detail::MeshTopology> topo;
   for (const Mesh& m : meshes) topo.push_back(detail::analyse_mesh(m));
 
@@ -183,7 +183,9 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     return true;
   };
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  std::size_t polls = 0;
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
+    stop.check_every(polls, 4096);
     const std::size_t i = std::min(x.info(), y.info()), j = std::max(x.info(), y.info());
     if (crosses(faces[i], faces[j])) pairs.emplace_back(i, j);
   });
@@ -203,6 +205,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     return EK::Plane_3(input_point<EK>(m, pv[0]), input_point<EK>(m, pv[1]), input_point<EK>(m, pv[2]));
   };
   for (const auto& [i, j] : pairs) {
+    stop.check_every(polls, 256);
     FaceRef f = faces[i], g = faces[j];
     // One key per pair of groups, whichever face came first.
     if (std::pair(g.mesh, topo[g.mesh].coplanar_group[g.face]) < std::pair(f.mesh, topo[f.mesh].coplanar_group[f.face]))

@@ -9,7 +9,7 @@ const std::vector<IntersectionSegment>& SceneIntersections::segments() const {
     if (!wanted_) return;
     progress_.report("finding where faces penetrate");
     const auto start = std::chrono::steady_clock::now();
-    segments_ = intersection_lines(scene_.meshes);
+    segments_ = intersection_lines(scene_.meshes, progress_.stop);
     seconds_ = seconds_since(start);
   });
   found_ = true;
@@ -29,12 +29,16 @@ ViewSolution<K> solve_view(const Scene& scene, const View& view, const SolveOpti
   const auto start = std::chrono::steady_clock::now();
   try {
     progress.check();
-    solution.sources = build_sources<K>(scene.meshes, solution.frame, options.sources);
+    SourceOptions sources = options.sources;
+    sources.stop = progress.stop;
+    solution.sources = build_sources<K>(scene.meshes, solution.frame, sources);
     solution.times.sources = seconds_since(start);
     progress.check();
     progress.report("sorting " + std::to_string(solution.sources.polygons.size()) + " polygons");
     const auto mark = std::chrono::steady_clock::now();
-    solution.map = area_sort<K>(solution.sources, options.sort);
+    AreaSortOptions sort = options.sort;
+    sort.stop = progress.stop;
+    solution.map = area_sort<K>(solution.sources, sort);
     solution.times.sort = seconds_since(mark);
   } catch (const clip::ClipError& e) {
     if constexpr (Geometry<K>::exact_constructions) throw;

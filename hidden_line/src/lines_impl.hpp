@@ -444,6 +444,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
 
   tbb::enumerable_thread_specific<typename detail::Classifier<K>::Scratch> scratch;
   parallel_chunks(out.lines.size(), 16, [&](const auto& range) {
+    options.stop.check();
     auto& mine = scratch.local();
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       FeatureLine<K>& line = out.lines[i];
@@ -463,7 +464,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
 }
 
 template <class K>
-std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
+std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken stop) {
   using G = Geometry<K>;
   using FT = typename G::FT;
   struct Span {
@@ -503,7 +504,9 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines) {
   detail::LooseGrid grid(domain, spans.size());
   std::vector<std::int8_t> collinear(lines.lines.size(), -1);  // with the current span's line
   std::vector<std::uint32_t> asked;
+  std::size_t polls = 0;
   for (const Span& span : spans) {
+    stop.check_every(polls, 1024);
     const detail::ImageLine<K>& image = images[span.line];
     const auto a = image.at(span.t0), b = image.at(span.t1);
     const CGAL::Bbox_2 box = G::bbox(a) + G::bbox(b);

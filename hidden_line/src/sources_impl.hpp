@@ -88,7 +88,9 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
   using P = typename G::Point;
   Sources<K> out;
 
+  std::size_t polls = 0;
   for (std::uint32_t mi = 0; mi < meshes.size(); ++mi) {
+    options.stop.check();
     const Mesh& mesh = meshes[mi];
     const std::size_t nf = mesh.faces.size();
     out.stats.faces += nf;
@@ -133,6 +135,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     // Facing: the sign of the projected area (+1 toward the viewer).
     std::vector<int> facing(nf);
     for (std::uint32_t f = 0; f < nf; ++f) {
+      options.stop.check_every(polls, 4096);
       const auto& face = mesh.faces[f];
       if (face.size() == 3) {
         facing[f] = G::orientation(p2[face[0]], p2[face[1]], p2[face[2]]);

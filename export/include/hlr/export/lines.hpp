@@ -103,7 +103,7 @@ struct LineDrawing {
 template <class K>
 LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, KernelKind kernel,
                          const hidden_line::LineSet<K>& lines,
-                         const std::vector<hidden_line::DrawnSegment<K>>& segments);
+                         const std::vector<hidden_line::DrawnSegment<K>>& segments, StopToken stop = {});
 
 // The raster path's drawing: every piece is drawn as it is (no precedence step; the raster
 // classification decides one class per pixel step).
@@ -241,7 +241,7 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style);
 #define HLR_EXPORT_LINES_DECLARE(K, EXTERN)                                                              \
   EXTERN template LineDrawing make_drawing<K>(const InputInfo&, const ViewFrame<K>&, KernelKind,         \
                                               const hidden_line::LineSet<K>&,                            \
-                                              const std::vector<hidden_line::DrawnSegment<K>>&);
+                                              const std::vector<hidden_line::DrawnSegment<K>>&, StopToken);
 
 HLR_EXPORT_LINES_DECLARE(ExactKernel, extern)
 HLR_EXPORT_LINES_DECLARE(EpickKernel, extern)

@@ -14,6 +14,7 @@
 //   clip_json       the hlr-clip/1 document of an outcome.
 #pragma once
 
+#include <hlr/kernel/errors.hpp>
 #include <hlr/kernel/kernel.hpp>
 
 #include <array>
@@ -51,6 +52,7 @@ struct ClipOptions {
   KernelKind kernel = KernelKind::exact;
   std::string subject_name = "subject", clip_name = "clip";  // the files, in messages
   bool exact_values = false;  // also keep every vertex and area as exact "p/q" strings
+  StopToken stop;             // polled between clip polygons
 };
 
 // Where an output edge lies: edge `edge` (input vertex edge -> edge + 1) of contour `contour`

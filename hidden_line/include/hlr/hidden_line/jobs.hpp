@@ -6,8 +6,9 @@
 //                       it (they live in model space); a line job finds them beside its polygon
 //                       stages when a second thread is free.
 //
-// Every job takes a Progress: a line per stage for a progress display, and a question, asked
-// between stages, whether to stop (the job then throws hlr::Cancelled). Line drawings and
+// Every job takes a Progress: a line per stage for a progress display, and two ways to stop it
+// (the job then throws hlr::Cancelled): a question asked between stages, and a StopToken that the
+// long stages poll as they go. Line drawings and
 // documents are export's jobs (export/jobs.hpp); they take the same Progress.
 #pragma once
 
@@ -28,12 +29,14 @@ namespace hlr::hidden_line {
 
 struct Progress {
   std::function<void(std::string_view)> stage;  // "sorting 1200 polygons": a stage begins
-  std::function<bool()> cancelled;              // true: stop at the next stage with Cancelled
+  std::function<bool()> cancelled;              // asked between stages: true stops the job
+  StopToken stop;                               // polled within the long stages too
 
   void report(const std::string& what) const {
     if (stage) stage(what);
   }
   void check() const {
+    stop.check();
     if (cancelled && cancelled()) throw Cancelled();
   }
 };

@@ -38,7 +38,8 @@ struct IntersectionSegment {
   double meeting_degrees = 90;
 };
 
-std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes);
+// Throws Cancelled when `stop` asks (polled between candidate face pairs).
+std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes, StopToken stop = {});
 
 template <class K>
 struct LinePiece {
@@ -77,6 +78,7 @@ struct LineSet {
 struct LineOptions {
   FeatureOptions features;
   bool intersections = true;
+  StopToken stop;  // polled between chunks of lines
 };
 
 // `sources` and `map` must come from build_sources and area_sort of the same meshes and frame,
@@ -98,13 +100,13 @@ struct DrawnSegment {
 };
 
 template <class K>
-std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines);
+std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken stop = {});
 
 #define HLR_HIDDEN_LINE_LINES_DECLARE(K, EXTERN)                                                         \
   EXTERN template LineSet<K> classify_lines<K>(const std::vector<Mesh>&, const ViewFrame<K>&, const Sources<K>&, \
                                               const VisibilityMap<K>&, const std::vector<IntersectionSegment>&, \
                                               const LineOptions&);                                           \
-  EXTERN template std::vector<DrawnSegment<K>> drawing_segments<K>(const LineSet<K>&);
+  EXTERN template std::vector<DrawnSegment<K>> drawing_segments<K>(const LineSet<K>&, StopToken);
 
 HLR_HIDDEN_LINE_LINES_DECLARE(ExactKernel, extern)
 HLR_HIDDEN_LINE_LINES_DECLARE(EpickKernel, extern)

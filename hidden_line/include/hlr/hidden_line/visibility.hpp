@@ -19,6 +19,7 @@
 #pragma once
 
 #include <hlr/clipper/clipper.hpp>
+#include <hlr/kernel/errors.hpp>
 #include <hlr/kernel/scene.hpp>
 #include <hlr/kernel/view.hpp>
 
@@ -81,6 +82,7 @@ struct Sources {
 struct SourceOptions {
   bool remove_back_faces = true;
   bool consolidate = true;
+  StopToken stop;  // polled as the faces are projected
 };
 
 template <class K>
@@ -114,6 +116,7 @@ struct AreaSortOptions {
   // sources each (at most 8), sorted in parallel; 0 never cuts it. Fragments that reach across a
   // strip border come out as one piece per strip. The strips do not depend on the thread count.
   std::size_t sources_per_strip = 256;
+  StopToken stop;  // polled between front polygons
 };
 
 // Solves visibility for the sources; appends the lines of strip borders and penetration splits to

@@ -1,0 +1,202 @@
+// End-to-end tests of how a run ends early or says what it does: --timeout, --max-faces, SIGINT and
+// SIGTERM during the work, the progress line on a terminal and with --progress, and errors that
+// stay one line when the import had warnings. A run that stops leaves no output and no temporary
+// file behind, whatever the number of outputs.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t count_lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+class CliLimits : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string templ = (fs::temp_directory_path() / "hlr-limits-test-XXXXXX").string();
+    ASSERT_NE(::mkdtemp(templ.data()), nullptr);
+    dir_ = templ;
+    fs::create_directories(dir_ / "out");
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  // A bumpy grid of n x n vertices, 2 (n - 1)^2 triangles: no two of them coplanar, so that the
+  // area sort and the line classification have real work (about 10 s at n = 300 on one core).
+  fs::path bumpy_grid(int n) const {
+    const fs::path path = dir_ / "grid.off";
+    std::ofstream off(path);
+    off << "OFF\n" << n * n << ' ' << 2 * (n - 1) * (n - 1) << " 0\n";
+    std::uint64_t state = 12345;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        off << x << ' ' << y << ' ' << static_cast<double>(state >> 40) / double(1 << 24) << '\n';
+      }
+    for (int y = 0; y + 1 < n; ++y)
+      for (int x = 0; x + 1 < n; ++x) {
+        const int v = y * n + x;
+        off << "3 " << v << ' ' << v + 1 << ' ' << v + n + 1 << "\n3 " << v << ' ' << v + n + 1 << ' ' << v + n << '\n';
+      }
+    return path;
+  }
+
+  pid_t start(std::vector<std::string> args) const {
+    args.insert(args.begin(), HLR_BINARY);
+    std::vector<char*> argv;
+    for (auto& s : args) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    const std::string out_log = (dir_ / "stdout").string(), err_log = (dir_ / "stderr").string();
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, out_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions, 2, err_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = 0;
+    const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    EXPECT_EQ(rc, 0) << "cannot start " << argv[0];
+    return pid;
+  }
+
+  Outcome finish(pid_t pid) const {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    Outcome run;
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    run.out = slurp(dir_ / "stdout");
+    run.err = slurp(dir_ / "stderr");
+    return run;
+  }
+
+  Outcome hlr(const std::vector<std::string>& args) const { return finish(start(args)); }
+
+  std::vector<std::string> draw_args(const fs::path& mesh) const {
+    return {"draw", mesh.string(), "--view", "iso", "-o", out("a.svg"), "-o", out("a.json"), "-o", out("a.dxf")};
+  }
+  std::string out(const std::string& name) const { return (dir_ / "out" / name).string(); }
+
+  // Nothing in the output folder: no output, no temporary file.
+  void expect_nothing_written() const {
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(dir_ / "out")) left.push_back(e.path().filename().string());
+    EXPECT_TRUE(left.empty()) << "left behind: " << ::testing::PrintToString(left);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(CliLimits, TimeoutStopsTheRunWithOneLineAndNoFile) {
+  const fs::path grid = bumpy_grid(300);
+  auto args = draw_args(grid);
+  args.insert(args.end(), {"--timeout", "0.5"});
+  const auto begin = std::chrono::steady_clock::now();
+  const Outcome run = hlr(args);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  EXPECT_EQ(run.exit_code, 124) << run.err;
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+  EXPECT_EQ(run.err.rfind("hlr: --timeout 0.5: the run stopped after 0.5 s while ", 0), 0u) << run.err;
+  EXPECT_NE(run.err.find("; no file written"), std::string::npos) << run.err;
+  EXPECT_LT(seconds, 5.0) << "the run went on after its timeout";  // a whole run takes several times that
+  expect_nothing_written();
+}
+
+TEST_F(CliLimits, SigintStopsTheWorkAndRemovesEveryTemporaryFile) {
+  const fs::path grid = bumpy_grid(300);
+  for (const int signo : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(signo);
+    const pid_t pid = start(draw_args(grid));
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // well into the solving stages
+    ::kill(pid, signo);
+    const Outcome run = finish(pid);
+    EXPECT_EQ(run.exit_code, 128 + signo) << run.err;
+    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+    EXPECT_EQ(run.err.rfind(signo == SIGINT ? "hlr: interrupted (SIGINT)" : "hlr: terminated (SIGTERM)", 0), 0u)
+        << run.err;
+    EXPECT_NE(run.err.find("no file written"), std::string::npos) << run.err;
+    expect_nothing_written();
+  }
+}
+
+TEST_F(CliLimits, MaxFacesRefusesALargerScene) {
+  const fs::path cube = fs::path(HLR_SCENE_FIXTURES) / "cube.off";
+  const Outcome run = hlr({"draw", cube.string(), "--max-faces", "5", "-o", out("a.svg")});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+  EXPECT_NE(run.err.find(cube.string() + ": "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("more than --max-faces 5"), std::string::npos) << run.err;
+  expect_nothing_written();
+  EXPECT_EQ(hlr({"draw", cube.string(), "--max-faces", "12", "-o", out("a.svg")}).exit_code, 0);
+}
+
+TEST_F(CliLimits, ProgressLinesOnlyWhenAskedOffATerminal) {
+  const fs::path cube = fs::path(HLR_SCENE_FIXTURES) / "cube.off";
+  const Outcome quiet = hlr({"draw", cube.string(), "-o", out("a.svg")});
+  EXPECT_EQ(quiet.exit_code, 0);
+  EXPECT_EQ(quiet.err, "");
+  const Outcome lines = hlr({"draw", cube.string(), "-o", out("b.svg"), "--progress"});
+  EXPECT_EQ(lines.exit_code, 0);
+  for (const char* stage : {"hlr: reading 1 mesh\n", "hlr: sorting ", "hlr: classifying feature lines\n",
+                            "hlr: writing 1 output\n"})
+    EXPECT_NE(lines.err.find(stage), std::string::npos) << stage << " in:\n" << lines.err;
+}
+
+TEST_F(CliLimits, ALiveProgressLineOnATerminal) {
+  // script(1) runs hlr on a pseudo-terminal and copies what it shows.
+  if (::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "script(1) is not installed";
+  const fs::path grid = bumpy_grid(300);
+  const std::string command = std::string(HLR_BINARY) + " draw " + grid.string() + " -o " + out("a.svg") +
+                              " --timeout 2.5 >/dev/null";
+  const std::string shown = (dir_ / "terminal").string();
+  const std::string script = "script -qec '" + command + "' " + shown + " >/dev/null 2>&1";
+  EXPECT_NE(::system(script.c_str()), -1);
+  const std::string text = slurp(shown);
+  EXPECT_NE(text.find("\r\033[Khlr: "), std::string::npos) << text;
+  EXPECT_NE(text.find(" s)"), std::string::npos) << text;
+  EXPECT_NE(text.find("hlr: --timeout 2.5: the run stopped"), std::string::npos) << text;
+  expect_nothing_written();
+}
+
+TEST_F(CliLimits, AnErrorAfterImportWarningsIsStillOneLine) {
+  // The inward box warns at import; the scale does not fit the sheet, found after solving.
+  const fs::path box = fs::path(HLR_SCENE_FIXTURES) / "inward_box.off";
+  const Outcome run = hlr({"draw", box.string(), "--scale", "1000:1", "-o", out("a.svg")});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+  EXPECT_EQ(run.err.rfind("hlr: --scale 1000:1: ", 0), 0u) << run.err;
+  const Outcome ok = hlr({"draw", box.string(), "-o", out("a.svg")});
+  EXPECT_EQ(ok.exit_code, 0);
+  EXPECT_NE(ok.err.find("hlr: warning: "), std::string::npos) << "the warning is still printed on success";
+}
+
+}  // namespace

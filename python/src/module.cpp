@@ -6,7 +6,7 @@
 //     options the program checks with CLI11 (view, kernel, crease, sheet, scale...) are checked
 //     here with the same limits;
 //   - the GIL is released while a job runs (other Python threads go on), and Ctrl-C stops a job
-//     between its stages (Progress::cancelled) with KeyboardInterrupt;
+//     with KeyboardInterrupt (InterruptScope, PythonProgress);
 //   - documents are made by the program's own writers, so that a file written from Python is the
 //     file `hlr draw` writes for the same input and options.
 #include "arrays.hpp"
@@ -23,6 +23,7 @@
 #include <tbb/global_control.h>
 
 #include <atomic>
+#include <csignal>
 #include <charconv>
 #include <cmath>
 #include <exception>
@@ -99,15 +100,55 @@ Scene make_scene(const std::vector<std::shared_ptr<ImportedMesh>>& meshes) {
   return scene;
 }
 
+// Ctrl-C within a stage. Python's own SIGINT handler only trips a flag that the interpreter looks
+// at between bytecodes, which it does not run while a job holds the main thread. So while a job
+// runs in the main thread, and Python's default handler is in place, a C handler sets the flag
+// the job's stages poll (hlr::StopToken): the job stops within a fraction of a second, and Python
+// gets its KeyboardInterrupt. Python's handler is put back when the job ends.
+std::atomic<bool> g_interrupted = false;
+
+extern "C" void interrupt_job(int) { g_interrupted.store(true); }
+
+class InterruptScope {
+ public:
+  InterruptScope() {  // with the GIL held
+    const py::module_ threading = py::module_::import("threading");
+    const py::module_ signal = py::module_::import("signal");
+    if (!threading.attr("current_thread")().is(threading.attr("main_thread")())) return;
+    if (!signal.attr("getsignal")(signal.attr("SIGINT")).is(signal.attr("default_int_handler"))) return;
+    g_interrupted = false;
+    struct sigaction action {};
+    action.sa_handler = interrupt_job;
+    sigemptyset(&action.sa_mask);
+    active_ = ::sigaction(SIGINT, &action, &previous_) == 0;
+  }
+  ~InterruptScope() {
+    if (!active_) return;
+    ::sigaction(SIGINT, &previous_, nullptr);
+    // A Ctrl-C after the job's last check: Python's KeyboardInterrupt comes at its next bytecode.
+    if (g_interrupted) PyErr_SetInterrupt();
+  }
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+
+  StopToken token() const { return active_ ? StopToken(&g_interrupted) : StopToken(); }
+  bool interrupted() const { return active_ && g_interrupted; }
+
+ private:
+  bool active_ = false;
+  struct sigaction previous_ {};
+};
+
 // Progress for a job run from Python: stage lines to a Python callable, and Ctrl-C (or an
-// exception in that callable) asked about between stages. Stages may be reported from several
-// threads at once; each call takes the GIL.
+// exception in that callable) asked about between stages and, in the main thread, within them.
+// Stages may be reported from several threads at once; each call takes the GIL.
 class PythonProgress {
  public:
   explicit PythonProgress(py::object callback) : callback_(std::move(callback)) {}
 
   exporter::Progress progress() {
     exporter::Progress p;
+    p.stop = interrupt_.token();
     if (!callback_.is_none())
       p.stage = [this](std::string_view what) {
         py::gil_scoped_acquire locked;
@@ -141,6 +182,11 @@ class PythonProgress {
       return job();
     } catch (const Cancelled&) {
       if (error_) std::rethrow_exception(error_);
+      if (interrupt_.interrupted()) {
+        g_interrupted = false;  // raised here, not again when the scope ends
+        PyErr_SetNone(PyExc_KeyboardInterrupt);
+        throw py::error_already_set();
+      }
       throw;
     }
   }
@@ -149,6 +195,7 @@ class PythonProgress {
   // that holds it.
  private:
   py::object callback_;
+  InterruptScope interrupt_;
   std::atomic<bool> stop_ = false;
   std::mutex mutex_;
   std::exception_ptr error_;

@@ -300,3 +300,42 @@ def test_the_readmes_example_runs(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     exec(compile(code, "README.md", "exec"), {})
     assert (tmp_path / "cube.svg").read_bytes().startswith(b"<?xml")
+
+
+INTERRUPTED_DRAW = """
+import sys, time
+import numpy as np
+import hlrdraw
+# A height field of 2 x 200 x 200 triangles: several seconds of work, in stages that poll the stop flag.
+n = 200
+x, y = np.meshgrid(np.arange(n + 1.0), np.arange(n + 1.0))
+z = np.sin(x * 0.37) * np.cos(y * 0.23) * 3 + (x * y) % 7 * 0.01
+vertices = np.column_stack([x.ravel(), y.ravel(), z.ravel()])
+i = (np.arange(n)[None, :] + (n + 1) * np.arange(n)[:, None]).ravel()
+faces = np.concatenate([np.column_stack([i, i + 1, i + n + 2]), np.column_stack([i, i + n + 2, i + n + 1])])
+mesh = hlrdraw.mesh(vertices, faces)
+def stage(what):
+    print("stage", what, flush=True)
+try:
+    hlrdraw.draw(mesh, view="iso", progress=stage)
+    print("finished", flush=True)
+except KeyboardInterrupt:
+    print("KeyboardInterrupt", time.monotonic(), flush=True)
+"""
+
+
+def test_ctrl_c_stops_a_job_within_its_stage():
+    import signal
+    import subprocess
+    import sys
+    import time
+    child = subprocess.Popen([sys.executable, "-c", INTERRUPTED_DRAW], stdout=subprocess.PIPE, text=True,
+                             env=dict(os.environ))
+    first = child.stdout.readline()
+    assert first.startswith("stage"), first
+    time.sleep(0.3)
+    sent = time.monotonic()
+    child.send_signal(signal.SIGINT)
+    rest = child.communicate(timeout=60)[0].splitlines()
+    assert rest and rest[-1].startswith("KeyboardInterrupt"), rest
+    assert float(rest[-1].split()[1]) - sent < 2.0, "the job did not stop within its stage"

@@ -69,6 +69,12 @@ int stop_signal() { return g_signal; }
 JobScope::JobScope() { ++g_jobs; }
 JobScope::~JobScope() { --g_jobs; }
 
+StopAtOnce::StopAtOnce() { --g_jobs; }
+StopAtOnce::~StopAtOnce() {
+  ++g_jobs;
+  if (g_signal != 0) g_stop.store(true);  // a signal may have come as the span ended
+}
+
 void register_temporary(const char* path) {
   for (auto& slot : g_temporaries) {
     const char* empty = nullptr;

@@ -37,6 +37,16 @@ class JobScope {
   JobScope& operator=(const JobScope&) = delete;
 };
 
+// Marks a span inside a JobScope that does not poll the flag (reading meshes): there a signal
+// stops the run at once.
+class StopAtOnce {
+ public:
+  StopAtOnce();
+  ~StopAtOnce();
+  StopAtOnce(const StopAtOnce&) = delete;
+  StopAtOnce& operator=(const StopAtOnce&) = delete;
+};
+
 // The temporary file of an output being written: removed by the handler when the run is stopped
 // at once. Up to 256 at a time (more are still removed by their AtomicFile when the work stops
 // through the flag).

@@ -1,5 +1,6 @@
 #include "scene_options.hpp"
 
+#include "interrupt.hpp"
 #include "subcommand.hpp"
 
 #include <algorithm>
@@ -76,7 +77,11 @@ std::optional<View> resolve_view(const SceneOptions& options) {
 }
 
 Scene read_scene(const std::vector<std::string>& paths, const RunLimits& limits) {
-  Scene scene = hlr::load_scene(paths);
+  Scene scene;
+  {
+    const StopAtOnce reading;  // the readers do not poll the stop flag
+    scene = hlr::load_scene(paths);
+  }
   if (scene.input.faces > limits.max_faces)
     throw UserError(paths.size() == 1 ? paths.front() : paths.front() + " and " + std::to_string(paths.size() - 1) + " more",
                     std::to_string(scene.input.faces) + " faces, more than --max-faces " +

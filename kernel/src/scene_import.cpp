@@ -268,27 +268,37 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
 }  // namespace
 
 Mesh load_mesh(const std::string& path, ImportReport& report) {
-  const std::string ext = lower(extension_of(path));
-  RawMesh (*reader)(const std::string&) = nullptr;
-  if (ext == ".off") reader = &scene_detail::read_off;
-  else if (ext == ".obj") reader = &scene_detail::read_obj;
-  else if (ext == ".stl") reader = &scene_detail::read_stl;
-  else if (ext == ".ply") reader = &scene_detail::read_ply;
-  else if (ext.empty()) throw ImportError(path + ": no file extension (expected .off, .obj, .stl or .ply)");
-  else throw ImportError(path + ": unknown extension '" + extension_of(path) + "' (expected .off, .obj, .stl or .ply)");
+  const std::string ext = extension_of(path);
+  if (ext.empty()) throw ImportError(path + ": no file extension (expected .off, .obj, .stl or .ply)");
+  if (!is_mesh_extension(ext))
+    throw ImportError(path + ": unknown extension '" + ext + "' (expected .off, .obj, .stl or .ply)");
+  return parse_mesh(path, ext, read_file(path), report);
+}
 
-  std::string bytes = read_file(path);
-  if (bytes.empty()) throw ImportError(path + ": empty file");
+bool is_mesh_extension(const std::string& extension) {
+  const std::string ext = lower(extension);
+  return ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply";
+}
+
+Mesh parse_mesh(const std::string& name, const std::string& extension, std::string bytes, ImportReport& report) {
+  const std::string ext = lower(extension);
+  RawMesh (*reader)(const std::string&) = ext == ".off"   ? &scene_detail::read_off
+                                          : ext == ".obj" ? &scene_detail::read_obj
+                                          : ext == ".stl" ? &scene_detail::read_stl
+                                          : ext == ".ply" ? &scene_detail::read_ply
+                                                          : nullptr;
+  if (!reader) throw ImportError(name + ": unknown format '" + extension + "' (expected .off, .obj, .stl or .ply)");
+  if (bytes.empty()) throw ImportError(name + ": empty file");
   RawMesh raw;
   try {
     raw = reader(bytes);
   } catch (const scene_detail::FormatError& e) {
-    throw ImportError(path + ": " + e.what());
+    throw ImportError(name + ": " + e.what());
   } catch (const std::bad_alloc&) {
-    throw ImportError(path + ": out of memory while reading");
+    throw ImportError(name + ": out of memory while reading");
   }
   bytes = std::string();
-  return finish(path, std::move(raw), report);
+  return finish(name, std::move(raw), report);
 }
 
 Mesh make_mesh(const std::string& name, std::vector<std::array<double, 3>> vertices,

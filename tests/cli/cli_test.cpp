@@ -1,6 +1,7 @@
 // End-to-end tests of `hlr clip` and `hlr surfaces`: the program is run as a user runs it, and its exit code, stdout,
 // stderr and output file are checked. Results are checked exactly, with GMP rationals read from the
 // output's "outer_exact" / "holes_exact" strings, not with the program's own arithmetic.
+#include "cli_support.hpp"
 #include "svg_reader.hpp"
 
 #include <gmpxx.h>
@@ -34,32 +35,7 @@ using nlohmann::json;
 const std::string kBinary = HLR_BINARY;
 const fs::path kFixtures = HLR_CLIP_FIXTURES;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void spit(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-std::vector<std::string> entries(const fs::path& dir) {  // hidden files included
-  std::vector<std::string> names;
-  if (!fs::exists(dir)) return names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-std::size_t count_lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+using namespace hlr::cli_test;
 
 // ---- exact arithmetic on the output ---------------------------------------------------------------
 

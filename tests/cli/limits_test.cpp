@@ -2,6 +2,8 @@
 // SIGTERM during the work, the progress line on a terminal and with --progress, and errors that
 // stay one line when the import had warnings. A run that stops leaves no output and no temporary
 // file behind, whatever the number of outputs.
+#include "cli_support.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -25,19 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::size_t count_lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+using namespace hlr::cli_test;
 
 class CliLimits : public ::testing::Test {
  protected:
@@ -108,9 +98,7 @@ class CliLimits : public ::testing::Test {
 
   // Nothing in the output folder: no output, no temporary file.
   void expect_nothing_written() const {
-    std::vector<std::string> left;
-    for (const auto& e : fs::directory_iterator(dir_ / "out")) left.push_back(e.path().filename().string());
-    EXPECT_TRUE(left.empty()) << "left behind: " << ::testing::PrintToString(left);
+    EXPECT_TRUE(entries(dir_ / "out").empty()) << "left behind: " << ::testing::PrintToString(entries(dir_ / "out"));
   }
 
   fs::path dir_;

@@ -89,6 +89,11 @@ struct ImportError : std::runtime_error {
 // Reads FILE by its extension (.off, .obj, .stl, .ply; any letter case). Throws ImportError.
 Mesh load_mesh(const std::string& path, ImportReport& report);
 
+// The same from a file's bytes in memory, in the format `extension` names (".off", ...); `name`
+// stands for the file in messages and in Mesh::file. Throws ImportError.
+Mesh parse_mesh(const std::string& name, const std::string& extension, std::string bytes, ImportReport& report);
+bool is_mesh_extension(const std::string& extension);  // one that load_mesh reads
+
 // The same checks and face preparation for a mesh given as arrays (a program's own data): `name`
 // stands for the file in messages and in Mesh::file. Throws ImportError.
 Mesh make_mesh(const std::string& name, std::vector<std::array<double, 3>> vertices,

@@ -25,6 +25,9 @@ packages=(
   python3-matplotlib
   # peer in the clipper benchmark (Clipper 1, integer coordinates)
   libpolyclipping-dev
+  # the Python module hlrdraw (python/): bindings, numpy arrays, its tests (pytest, Hypothesis with
+  # shapely as the clipper's oracle) and batches on Dask (python3 -m hlrdraw.batch)
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-shapely python3-distributed
   # fuzzing (scripts/fuzz.sh): clang's libFuzzer and sanitizers
   clang libfuzzer-14-dev
 )

@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_surfaces_command(app));
   commands.push_back(add_shadows_command(app));
   commands.push_back(add_clip_command(app));
+  commands.push_back(add_batch_command(app));
 
   app.footer(
       "Examples:\n"
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
       "  hlr surfaces fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg\n"
       "  hlr shadows fixtures/shadows/box_on_ground.off --sun 1,2,-4 -o out/box_shadows.json\n"
       "  hlr clip fixtures/clip/subject.json fixtures/clip/clip.json -o out/clip-result.json\n"
+      "  hlr batch catalogue.json --jobs 4\n"
       "\n"
       "Run 'hlr SUBCOMMAND --help' for a subcommand's options; formats are in docs/FORMATS.md.\n"
       "Exit status: 0 success, 1 bad input or unwritable output, 2 bad command line, 3 internal error,\n"

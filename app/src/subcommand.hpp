@@ -31,5 +31,6 @@ Subcommand add_shadows_command(CLI::App& parent);
 Subcommand add_draw_command(CLI::App& parent);
 Subcommand add_sheet_command(CLI::App& parent);
 Subcommand add_check_command(CLI::App& parent);
+Subcommand add_batch_command(CLI::App& parent);
 
 }  // namespace hlr::app

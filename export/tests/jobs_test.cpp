@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,22 @@ TEST(Jobs, MeshFromArraysRefusesBadIndicesNamingIt) {
     FAIL() << "no error";
   } catch (const ImportError& e) {
     EXPECT_EQ(std::string(e.what()), "bracket: face 0: vertex index 3 is out of range (3 vertices)");
+  }
+}
+
+TEST(Jobs, MeshFromArraysRefusesNonFiniteAndHugeCoordinatesNamingIt) {
+  // No reader has seen these: finish's own check must say it as an ImportError naming the mesh.
+  ImportReport report;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [v, message] : std::vector<std::pair<Vec3, std::string>>{
+           {{nan, 0, 0}, "part: vertex 1: x coordinate nan is not a finite number"},
+           {{0, 1e101, 0}, "part: vertex 1: y coordinate 1e+101 is out of range (at most 1e100 in magnitude)"}}) {
+    try {
+      (void)make_mesh("part", {{0, 0, 0}, v, {0, 1, 0}}, {{0, 1, 2}}, report);
+      ADD_FAILURE() << "no error for " << message;
+    } catch (const ImportError& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
   }
 }
 

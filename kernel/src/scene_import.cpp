@@ -189,10 +189,14 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
   if (raw.faces.empty())
     fail("no faces (the file has " + std::to_string(raw.vertices.size()) + " vertices and no face)");
   // Readers check every coordinate and index as they read; checked again here, where it is cheap,
-  // so that no reader can let one through.
-  for (std::size_t i = 0; i < raw.vertices.size(); ++i)
-    for (int a = 0; a < 3; ++a)
-      scene_detail::check_coordinate(raw.vertices[i][a], a, "", [&] { return "vertex " + std::to_string(i); });
+  // so that no reader can let one through (and for make_mesh, whose arrays no reader has seen).
+  try {
+    for (std::size_t i = 0; i < raw.vertices.size(); ++i)
+      for (int a = 0; a < 3; ++a)
+        scene_detail::check_coordinate(raw.vertices[i][a], a, "", [&] { return "vertex " + std::to_string(i); });
+  } catch (const scene_detail::FormatError& e) {
+    fail(e.what());
+  }
   for (std::size_t k = 0; k < raw.faces.size(); ++k)
     for (std::uint32_t v : raw.faces[k])
       if (v >= raw.vertices.size())

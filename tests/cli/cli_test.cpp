@@ -1036,11 +1036,11 @@ TEST_F(CliDraw, BadMergeDistanceIsAUsageError) {
 TEST_F(CliDraw, UnknownSubcommandIsNamed) {
   Outcome run = hlr({"drwa", (kScenes / "cube.off").string(), "-o", out("c.svg").string()});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, sheet, check, surfaces, shadows or clip; see 'hlr --help')\n");
+  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, sheet, check, surfaces, shadows, clip or batch; see 'hlr --help')\n");
   EXPECT_TRUE(entries(dir_ / "out").empty());
   run = hlr({});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(run.err, "hlr: a subcommand is required (draw, sheet, check, surfaces, shadows or clip; see 'hlr --help')\n");
+  EXPECT_EQ(run.err, "hlr: a subcommand is required (draw, sheet, check, surfaces, shadows, clip or batch; see 'hlr --help')\n");
   // Options before the subcommand still work; --help and --version too.
   EXPECT_EQ(hlr({"--version"}).exit_code, 0);
   EXPECT_EQ(hlr({"--help"}).exit_code, 0);
@@ -1166,6 +1166,118 @@ TEST_F(CliCheck, DiffImageAndErrors) {
   EXPECT_EQ(entries(dir_ / "out"), std::vector<std::string>{"d.png"});
   Outcome kernel = hlr({"check", mesh, "--kernel", "epick"});
   EXPECT_EQ(kernel.exit_code, 2) << "check has --kernels, not --kernel";
+}
+
+}  // namespace
+
+// ---- hlr batch ------------------------------------------------------------------------------------
+namespace {
+
+class CliBatch : public CliDraw {
+ protected:
+  // The manifest in in/, with a copy of the cube in in/meshes/ for relative paths.
+  fs::path manifest(const json& jobs) const {
+    fs::create_directories(dir_ / "in" / "meshes");
+    fs::copy_file(kScenes / "cube.off", dir_ / "in" / "meshes" / "cube.off", fs::copy_options::overwrite_existing);
+    return write_input("manifest.json", json{{"format", "hlr-batch/1"}, {"jobs", jobs}}.dump());
+  }
+
+  static std::vector<std::string> sorted_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    std::sort(lines.begin(), lines.end());
+    return lines;
+  }
+
+  static json without_stats(json doc) {
+    doc.erase("stats");
+    return doc;
+  }
+};
+
+TEST_F(CliBatch, RunsEveryJobAsTheCliWouldAndReportsTheFailedOne) {
+  const std::string bracket = (kScenes / "l_bracket.off").string();
+  const fs::path m = manifest(json::array({
+      {{"command", "draw"}, {"meshes", {bracket}}, {"view", "iso"}, {"outputs", {"../out/b.svg", "../out/b.json"}}},
+      {{"command", "surfaces"}, {"meshes", {"meshes/cube.off"}}, {"view", "front"}, {"options", {"--exact"}},
+       {"outputs", {"../out/deep/c.json"}}},
+      {{"command", "draw"}, {"meshes", {"meshes/missing.off"}}, {"outputs", {"../out/m.svg"}}},
+      {{"command", "sheet"}, {"meshes", {"meshes/cube.off"}}, {"view", "front,top"}, {"outputs", {"../out/s.dxf"}}},
+  }));
+  Outcome run = hlr({"batch", m.string(), "--jobs", "2"});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(sorted_lines(run.out), (std::vector<std::string>{
+                                       "job 0 ok: ../out/b.svg ../out/b.json",
+                                       "job 1 ok: ../out/deep/c.json",
+                                       "job 2 failed: meshes/missing.off: cannot open (No such file or directory)",
+                                       "job 3 ok: ../out/s.dxf",
+                                   }));
+  EXPECT_NE(run.err.find("hlr batch: 3 of 4 jobs ok, 1 failed"), std::string::npos) << run.err;
+  EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"b.json", "b.svg", "deep", "s.dxf"}));
+
+  // The files are the ones the CLI writes for the same command lines (JSON apart from stats).
+  ASSERT_EQ(hlr({"draw", bracket, "--view", "iso", "-o", out("direct_b.svg").string(), "-o", out("direct_b.json").string()})
+                .exit_code,
+            0);
+  EXPECT_EQ(slurp(out("b.svg")), slurp(out("direct_b.svg")));
+  EXPECT_EQ(without_stats(json::parse(slurp(out("b.json")))), without_stats(json::parse(slurp(out("direct_b.json")))));
+  const json surfaces = json::parse(slurp(dir_ / "out" / "deep" / "c.json"));
+  EXPECT_EQ(surfaces.at("input").at("files"), json({"meshes/cube.off"}));  // run in the manifest's folder
+  EXPECT_TRUE(surfaces.dump().find("_exact") != std::string::npos) << "the job's options are passed on";
+}
+
+TEST_F(CliBatch, ListsTheJobsCommandLines) {
+  const fs::path m = manifest(json::array({
+      {{"command", "draw"}, {"meshes", {"meshes/cube.off", "b.off"}}, {"view", "top"}, {"options", {"--crease", "40"}},
+       {"outputs", {"x.svg"}}},
+      {{"command", "sheet"}, {"meshes", {"meshes/cube.off"}}, {"options", {"--threads", "1"}}, {"outputs", {"y.pdf"}}},
+  }));
+  Outcome run = hlr({"batch", m.string(), "--list", "--threads", "3"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out,
+            R"({"arguments":["draw","meshes/cube.off","b.off","--view","top","--crease","40","-o","x.svg","--threads","3"],)"
+            R"("job":0,"meshes":[1,2],"outputs":[8]})" "\n"
+            R"({"arguments":["sheet","meshes/cube.off","--threads","1","-o","y.pdf"],"job":1,"meshes":[1],"outputs":[5]})" "\n");
+  EXPECT_TRUE(entries(dir_ / "out").empty());
+}
+
+TEST_F(CliBatch, MalformedManifestsAreOneLineAndRunNothing) {
+  const std::string job = R"({"command": "draw", "meshes": ["meshes/cube.off"], "outputs": ["../out/x.svg"]})";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "file is empty"},
+      {"{\"format\": \"hlr-batch/1\", \"jobs\": [", "not valid JSON at byte"},
+      {"[]", "top level is an array, expected an object"},
+      {R"({"jobs": []})", R"("format" is missing)"},
+      {R"({"format": "hlr-lines/1", "jobs": []})", R"(format is "hlr-lines/1", expected "hlr-batch/1")"},
+      {R"({"format": "hlr-batch/1"})", R"("jobs" is missing)"},
+      {R"({"format": "hlr-batch/1", "jobs": [)" + job + R"(, 3]})", "job 1 is a number, expected an object"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "clip", "meshes": ["a"], "outputs": ["b"]}]})",
+       R"(job 0: unknown command "clip" (a job is draw, sheet or surfaces))"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "draw", "meshes": [], "outputs": ["b"]}]})",
+       R"(job 0: "meshes" is empty)"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "draw", "meshes": ["a"], "output": ["b"]}]})",
+       R"(job 0: unknown key "output")"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "draw", "meshes": ["a"], "outputs": [1]}]})",
+       R"(job 0: "outputs" item 0 is a number, expected a string)"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "draw", "meshes": ["a"], "options": ["-o", "c"], "outputs": ["b"]}]})",
+       R"(job 0: "options" name an output (-o))"},
+      {R"({"format": "hlr-batch/1", "jobs": [)" + job + ", " + job + "]}",
+       R"(job 1: output "../out/x.svg" is written by job 0 too)"},
+  };
+  for (const auto& [text, problem] : cases) {
+    const fs::path m = write_input("bad.json", text);
+    SCOPED_TRACE(text);
+    Outcome run = hlr({"batch", m.string()});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+    EXPECT_EQ(run.err.rfind("hlr: " + m.string() + ": " + problem, 0), 0u) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_TRUE(entries(dir_ / "out").empty());
+  }
+  Outcome missing = hlr({"batch", in("none.json").string()});
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_EQ(missing.err, "hlr: " + in("none.json").string() + ": cannot open (No such file or directory)\n");
 }
 
 }  // namespace

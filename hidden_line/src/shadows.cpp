@@ -261,6 +261,7 @@ class LightSolver {
     mark = Clock::now();
     AreaSortOptions sort_options = options_.sort;
     sort_options.keep_hidden = true;
+    sort_options.stop = options_.progress.stop;
     const VisibilityMap<K> map = area_sort<K>(sources_, sort_options);
     result_.times.sort += seconds_since(mark);
     options_.progress.check();

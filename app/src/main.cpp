@@ -39,7 +39,8 @@ int report(const std::string& message) {
 }
 
 // With HLR_PREDICATE_STATS set: one line per predicate family of the exact kernel, how many
-// decisions took no arithmetic, intervals, or exact arithmetic (bench/predicates reads them).
+// decisions took no arithmetic, intervals, exact arithmetic on doubles, or exact rational
+// arithmetic (bench/predicates reads them).
 void print_predicate_stats() {
   using hlr::PredicateStats;
   if (!PredicateStats::enabled) return;
@@ -47,7 +48,7 @@ void print_predicate_stats() {
   for (int f = 0; f < int(hlr::PredicateFamily::count); ++f) {
     const auto& c = PredicateStats::counts[f];
     std::cerr << "hlr: predicates " << families[f] << ": identity " << c[0].load() << ", interval " << c[1].load()
-              << ", exact " << c[2].load() << "\n";
+              << ", doubles " << c[2].load() << ", exact " << c[3].load() << "\n";
   }
 }
 

@@ -754,11 +754,11 @@ TEST_F(CliDraw, PredicateStatsCountTheExactKernelsDecisionsOnlyWhenAsked) {
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   ASSERT_EQ(counted.exit_code, 0) << counted.err;
   EXPECT_EQ(plain.err.find("predicates"), std::string::npos) << plain.err;
-  const std::regex line(R"(hlr: predicates (orientation|comparison|sign): identity (\d+), interval (\d+), exact (\d+))");
+  const std::regex line(R"(hlr: predicates (orientation|comparison|sign): identity (\d+), interval (\d+), doubles (\d+), exact (\d+))");
   std::size_t families = 0, orientations = 0;
   for (auto it = std::sregex_iterator(counted.err.begin(), counted.err.end(), line); it != std::sregex_iterator(); ++it) {
     ++families;
-    if ((*it)[1] == "orientation") orientations = std::stoull((*it)[2]) + std::stoull((*it)[3]) + std::stoull((*it)[4]);
+    if ((*it)[1] == "orientation") orientations = std::stoull((*it)[2]) + std::stoull((*it)[3]) + std::stoull((*it)[4]) + std::stoull((*it)[5]);
   }
   EXPECT_EQ(families, 3u) << counted.err;
   EXPECT_GT(orientations, 0u) << counted.err;

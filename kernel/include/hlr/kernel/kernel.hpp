@@ -92,9 +92,10 @@ inline std::string exact_string_of_double(double d) { return exact_rational_stri
 
 // How the exact kernel's predicates were decided, counted when the environment has
 // HLR_PREDICATE_STATS (hlr prints them on exit): without arithmetic (the same point twice), by
-// interval arithmetic on the approximations Epeck keeps, or by exact arithmetic.
+// interval arithmetic on the approximations Epeck keeps, exactly on doubles (points whose
+// coordinates are doubles, without GMP), or by exact rational arithmetic.
 enum class PredicateFamily { orientation, comparison, sign, count };
-enum class DecidedBy { identity, interval, exact, count };
+enum class DecidedBy { identity, interval, doubles, exact, count };
 struct PredicateStats {
   static inline const bool enabled = std::getenv("HLR_PREDICATE_STATS") != nullptr;
   static inline std::atomic<std::uint64_t> counts[int(PredicateFamily::count)][int(DecidedBy::count)] = {};
@@ -161,10 +162,22 @@ struct CgalGeometry {
         PredicateStats::add(PredicateFamily::orientation, DecidedBy::identity);
         return 0;
       }
+      // Points whose coordinates are doubles (input vertices in the axis views, strip corners):
+      // Epick's orientation is exact on doubles, with a static filter and, for the collinear
+      // cases the filter cannot settle, expansion arithmetic (Mpzf) instead of GMP rationals.
+      const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b), &ic = CGAL::approx(c);
+      const bool doubles = is_double(ia) && is_double(ib) && is_double(ic);
       if (PredicateStats::enabled) {
         CGAL::Protect_FPU_rounding<true> protect;
-        const auto o = CGAL::orientation(CGAL::approx(a), CGAL::approx(b), CGAL::approx(c));
-        PredicateStats::add(PredicateFamily::orientation, CGAL::is_certain(o) ? DecidedBy::interval : DecidedBy::exact);
+        const auto o = CGAL::orientation(ia, ib, ic);
+        PredicateStats::add(PredicateFamily::orientation, CGAL::is_certain(o) ? DecidedBy::interval
+                                                          : doubles           ? DecidedBy::doubles
+                                                                              : DecidedBy::exact);
+      }
+      if (doubles) {
+        using E = EpickKernel::Point_2;
+        return static_cast<int>(CGAL::orientation(E(ia.x().inf(), ia.y().inf()), E(ib.x().inf(), ib.y().inf()),
+                                                  E(ic.x().inf(), ic.y().inf())));
       }
     }
     return static_cast<int>(CGAL::orientation(a, b, c));
@@ -214,6 +227,11 @@ struct CgalGeometry {
   static int counted(DecidedBy by, int result) {
     PredicateStats::add(PredicateFamily::comparison, by);
     return result;
+  }
+  // Whether an interval point is one point of doubles: its approximation is then its exact value.
+  template <class IntervalPoint>
+  static bool is_double(const IntervalPoint& p) {
+    return p.x().inf() == p.x().sup() && p.y().inf() == p.y().sup();
   }
   // -1 or +1 when the intervals are apart, 0 when both are the same single number, 2 otherwise.
   template <class Interval>

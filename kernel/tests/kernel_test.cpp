@@ -110,6 +110,13 @@ TEST(ExactKernel, FilteredShortcutsAgreeWithExactEvaluation) {
     const auto r = i % 3 == 0 ? p : i % 3 == 1 ? G::midpoint(p, q) : G::point(value(mode), value(mode));
     ASSERT_EQ(G::orientation(p, q, r), static_cast<int>(CGAL::orientation(p, q, r))) << i;
     ASSERT_EQ(G::equal(p, r), p == r) << i;
+    // Three points of doubles on one line (2q - p is exact on the grids), decided on the doubles.
+    if (mode == 1 || mode == 2) {
+      const double px = value(mode), py = value(mode), qx = value(mode), qy = value(mode);
+      const auto s = G::point(px, py), t = G::point(qx, qy), u = G::point(2 * qx - px, 2 * qy - py);
+      ASSERT_EQ(G::orientation(s, t, u), static_cast<int>(CGAL::orientation(s, t, u))) << i;
+      ASSERT_EQ(G::orientation(s, t, u), 0) << i;
+    }
   }
   EXPECT_GT(zeros, 100u) << "the draws must hit ties";
 }

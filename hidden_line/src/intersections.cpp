@@ -3,9 +3,11 @@
 // Candidate pairs come from CGAL's box intersection on the faces' 3D bounding boxes. A pair can only
 // cross when each face has corners strictly on both sides of the other's plane (exact orientation
 // predicates on the input doubles), which rejects neighbours that merely share an edge or a corner
-// and faces that only touch. For the rest, the line where the two planes meet is intersected with
-// the relative interior of each face in the face's own plane (projected along the normal's largest
-// axis), and the two interval sets, measured with one parameter along the line, are intersected.
+// and faces that only touch. Two triangles each cut an open chord from the line where their
+// planes meet, with ends built from the input doubles (TriangleChords), and the chords overlap.
+// For other faces, that line is intersected with the relative interior of each face in the face's
+// own plane (projected along the normal's largest axis), and the two interval sets, measured with
+// one parameter along the line, are intersected.
 #include "lines_impl.hpp"
 #include "sources_impl.hpp"
 
@@ -16,9 +18,11 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
 
+#include <array>
 #include <cmath>
-#include <numbers>
 #include <map>
+#include <numbers>
+#include <stdexcept>
 #include <tuple>
 
 namespace hlr::hidden_line {
@@ -126,6 +130,69 @@ double angle_between(const EK::Vector_3& n, const EK::Vector_3& m) {
   const double dot = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
   return std::atan2(cross, dot) * 180 / std::numbers::pi;
 }
+// Where the boundary of a triangle meets the plane of a face it straddles: two points, corners in
+// the plane or crossings of edges with it, in lexicographic order (the order along the line the
+// two planes meet in). Built from the input doubles, not from that line: a crossing of edge i j
+// is c_i + t (c_j - c_i) with t = s_i / (s_i - s_j), s the signed volumes against the plane,
+// all in rationals. Such a point is exact with few bits, so what later needs it exactly (the
+// precedence of lines, their classification) evaluates a leaf, not a chain of plane, line and
+// interval constructions. A crossing shared by the triangles on both sides of an edge is built
+// once per plane, so that the two are one point.
+class TriangleChords {
+ public:
+  using ET = FT::Exact_type;
+  explicit TriangleChords(const std::vector<Mesh>& meshes) : meshes_(meshes) {}
+
+  // Triangle `face` of mesh `mesh` against the plane through a, b, c (three input points, not
+  // collinear), known to have corners strictly on both sides of it; `plane_id` names the plane
+  // (equal ids: one plane) for sharing crossings.
+  std::array<EK::Point_3, 2> chord(std::uint32_t mesh, std::uint32_t face, const Vec3& a, const Vec3& b, const Vec3& c,
+                                   std::uint64_t plane_id) {
+    const Mesh& m = meshes_[mesh];
+    const auto& t = m.faces[face];
+    int side[3];
+    for (int k = 0; k < 3; ++k)
+      side[k] = CGAL::orientation(ip(a), ip(b), ip(c), ip(m.vertices[t[k]]));
+    std::array<EK::Point_3, 2> out;
+    int n = 0;
+    for (int k = 0; k < 3 && n < 2; ++k) {
+      const std::uint32_t u = t[k], w = t[(k + 1) % 3];
+      if (side[k] == 0) out[n++] = input_point<EK>(m, u);
+      else if (side[k] * side[(k + 1) % 3] < 0) out[n++] = crossing(mesh, u, w, a, b, c, plane_id);
+    }
+    if (n != 2) throw std::logic_error("a straddling triangle meets the plane in two points");
+    if (CGAL::compare_xyz(out[1], out[0]) == CGAL::SMALLER) std::swap(out[0], out[1]);
+    return out;
+  }
+
+ private:
+  static IK::Point_3 ip(const Vec3& p) { return IK::Point_3(p[0], p[1], p[2]); }
+  // (p - a) . ((b - a) x (c - a)), exactly.
+  static ET volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+    const ET ux = ET(b[0]) - ET(a[0]), uy = ET(b[1]) - ET(a[1]), uz = ET(b[2]) - ET(a[2]);
+    const ET vx = ET(c[0]) - ET(a[0]), vy = ET(c[1]) - ET(a[1]), vz = ET(c[2]) - ET(a[2]);
+    const ET wx = ET(p[0]) - ET(a[0]), wy = ET(p[1]) - ET(a[1]), wz = ET(p[2]) - ET(a[2]);
+    const ET nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    return ET(wx * nx + wy * ny + wz * nz);
+  }
+  EK::Point_3 crossing(std::uint32_t mesh, std::uint32_t u, std::uint32_t w, const Vec3& a, const Vec3& b,
+                       const Vec3& c, std::uint64_t plane_id) {
+    auto [it, added] = crossings_.try_emplace({edge_key(u, w), plane_id, mesh});
+    if (added) {
+      const Vec3 &pu = meshes_[mesh].vertices[u], &pw = meshes_[mesh].vertices[w];
+      const ET su = volume(a, b, c, pu), sw = volume(a, b, c, pw);
+      const ET t = su / ET(su - sw);
+      FT x[3];
+      for (int k = 0; k < 3; ++k) x[k] = FT(ET(ET(pu[k]) + t * ET(ET(pw[k]) - ET(pu[k]))));
+      it->second = EK::Point_3(x[0], x[1], x[2]);
+    }
+    return it->second;
+  }
+
+  const std::vector<Mesh>& meshes_;
+  std::map<std::tuple<std::uint64_t, std::uint64_t, std::uint32_t>, EK::Point_3> crossings_;
+};
+
 }  // namespace
 
 std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& meshes, StopToken stop) {
@@ -199,6 +266,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     double meeting_degrees;
   };
   std::map<GroupPair, std::vector<Piece>> pieces;
+  TriangleChords chords(meshes);
   auto plane_of = [&](const FaceRef& r) {
     const auto& pv = topo[r.mesh].plane_vertices[r.face];
     const Mesh& m = meshes[r.mesh];
@@ -211,6 +279,22 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     if (std::pair(g.mesh, topo[g.mesh].coplanar_group[g.face]) < std::pair(f.mesh, topo[f.mesh].coplanar_group[f.face]))
       std::swap(f, g);
     const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);
+    const GroupPair key{f.mesh, topo[f.mesh].coplanar_group[f.face], g.mesh, topo[g.mesh].coplanar_group[g.face]};
+    if (meshes[f.mesh].faces[f.face].size() == 3 && meshes[g.mesh].faces[g.face].size() == 3) {
+      // Two triangles: the open chords each cuts from the line of the two planes, overlapped.
+      const double meeting_degrees = angle_between(pf.orthogonal_vector(), pg.orthogonal_vector());
+      auto chord = [&](const FaceRef& t, const FaceRef& other) {
+        const auto& pv = topo[other.mesh].plane_vertices[other.face];
+        const Mesh& om = meshes[other.mesh];
+        const std::uint64_t plane_id = (std::uint64_t(other.mesh) << 32) | topo[other.mesh].coplanar_group[other.face];
+        return chords.chord(t.mesh, t.face, om.vertices[pv[0]], om.vertices[pv[1]], om.vertices[pv[2]], plane_id);
+      };
+      const auto in_f = chord(f, g), in_g = chord(g, f);
+      const EK::Point_3& lo = CGAL::compare_xyz(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
+      const EK::Point_3& hi = CGAL::compare_xyz(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
+      if (CGAL::compare_xyz(lo, hi) == CGAL::SMALLER) pieces[key].push_back({lo, hi, f.face, g.face, meeting_degrees});
+      continue;
+    }
     const auto meet = CGAL::intersection(pf, pg);
     if (!meet) continue;
     const EK::Line_3* line = boost::get<EK::Line_3>(&*meet);  // CGAL 5: boost::variant
@@ -220,7 +304,6 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     const EK::Vector_3 d = line->to_vector();
     const auto in_f = interior_intervals(meshes[f.mesh], meshes[f.mesh].faces[f.face], pf.orthogonal_vector(), p, d);
     const auto in_g = interior_intervals(meshes[g.mesh], meshes[g.mesh].faces[g.face], pg.orthogonal_vector(), p, d);
-    const GroupPair key{f.mesh, topo[f.mesh].coplanar_group[f.face], g.mesh, topo[g.mesh].coplanar_group[g.face]};
     for (const Interval& x : in_f)
       for (const Interval& y : in_g) {
         const FT lo = CGAL::max(x.first, y.first), hi = CGAL::min(x.second, y.second);

@@ -44,5 +44,35 @@ RC_GTEST_PROP(Intersections, TrianglesSharingACornerCrossAsCgalSays, ()) {
   RC_ASSERT(found == expected);
 }
 
+RC_GTEST_PROP(Intersections, TwoTrianglesGiveCgalsSegmentExactly, ()) {
+  // Two triangles of two meshes on a small grid (coplanar, touching and corner-on-plane cases are
+  // common): a line exactly when CGAL's exact intersection is a segment through both interiors,
+  // and then with CGAL's ends, exactly (the ends are built from the input doubles, not from the
+  // line where the planes meet).
+  auto coordinate = [] { return double(*rc::gen::inRange(-3, 4)); };
+  Mesh a, b;
+  a.file = "a";
+  b.file = "b";
+  for (Mesh* m : {&a, &b}) {
+    for (int v = 0; v < 3; ++v) m->vertices.push_back({coordinate(), coordinate(), coordinate()});
+    m->faces = {{0, 1, 2}};
+  }
+  auto triangle = [](const Mesh& m) {
+    auto p = [&](int v) { return EK::Point_3(m.vertices[v][0], m.vertices[v][1], m.vertices[v][2]); };
+    return EK::Triangle_3(p(0), p(1), p(2));
+  };
+  const EK::Triangle_3 ta = triangle(a), tb = triangle(b);
+  RC_PRE(!ta.is_degenerate() && !tb.is_degenerate());
+  const auto lines = hidden_line::intersection_lines({a, b});
+  const bool expected = crossing_by_cgal(ta, tb);
+  RC_TAG(expected ? "crossing" : "not crossing");
+  RC_ASSERT(lines.size() == (expected ? 1u : 0u));
+  if (!expected) return;
+  const auto meet = CGAL::intersection(ta, tb);
+  const EK::Segment_3& s = *boost::get<EK::Segment_3>(&*meet);
+  const auto& l = lines.front();
+  RC_ASSERT((l.a == s.source() && l.b == s.target()) || (l.a == s.target() && l.b == s.source()));
+}
+
 }  // namespace
 }  // namespace hlr::hltest

@@ -17,6 +17,7 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 
 #include <array>
 #include <cmath>
@@ -134,7 +135,7 @@ double angle_between(const EK::Vector_3& n, const EK::Vector_3& m) {
 // the plane or crossings of edges with it, in lexicographic order (the order along the line the
 // two planes meet in). Built from the input doubles, not from that line: a crossing of edge i j
 // is c_i + t (c_j - c_i) with t = s_i / (s_i - s_j), s the signed volumes against the plane,
-// all in rationals. Such a point is exact with few bits, so what later needs it exactly (the
+// exactly. Such a point is exact with few bits, so what later needs it exactly (the
 // precedence of lines, their classification) evaluates a leaf, not a chain of plane, line and
 // interval constructions. A crossing shared by the triangles on both sides of an edge is built
 // once per plane, so that the two are one point.
@@ -167,23 +168,26 @@ class TriangleChords {
 
  private:
   static IK::Point_3 ip(const Vec3& p) { return IK::Point_3(p[0], p[1], p[2]); }
-  // (p - a) . ((b - a) x (c - a)), exactly.
-  static ET volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
-    const ET ux = ET(b[0]) - ET(a[0]), uy = ET(b[1]) - ET(a[1]), uz = ET(b[2]) - ET(a[2]);
-    const ET vx = ET(c[0]) - ET(a[0]), vy = ET(c[1]) - ET(a[1]), vz = ET(c[2]) - ET(a[2]);
-    const ET wx = ET(p[0]) - ET(a[0]), wy = ET(p[1]) - ET(a[1]), wz = ET(p[2]) - ET(a[2]);
-    const ET nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-    return ET(wx * nx + wy * ny + wz * nz);
+  // (p - a) . ((b - a) x (c - a)), exactly: ring operations on doubles, in Mpzf (no gcd).
+  static CGAL::Mpzf volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+    using Z = CGAL::Mpzf;
+    const Z ux = Z(b[0]) - Z(a[0]), uy = Z(b[1]) - Z(a[1]), uz = Z(b[2]) - Z(a[2]);
+    const Z vx = Z(c[0]) - Z(a[0]), vy = Z(c[1]) - Z(a[1]), vz = Z(c[2]) - Z(a[2]);
+    const Z wx = Z(p[0]) - Z(a[0]), wy = Z(p[1]) - Z(a[1]), wz = Z(p[2]) - Z(a[2]);
+    return wx * (uy * vz - uz * vy) + wy * (uz * vx - ux * vz) + wz * (ux * vy - uy * vx);
   }
+  // u + t (w - u) with t = s_u / (s_u - s_w) is (s_u w - s_w u) / (s_u - s_w): numerators and
+  // denominator in Mpzf, one rational division per coordinate.
   EK::Point_3 crossing(std::uint32_t mesh, std::uint32_t u, std::uint32_t w, const Vec3& a, const Vec3& b,
                        const Vec3& c, std::uint64_t plane_id) {
     auto [it, added] = crossings_.try_emplace({edge_key(u, w), plane_id, mesh});
     if (added) {
+      using Z = CGAL::Mpzf;
       const Vec3 &pu = meshes_[mesh].vertices[u], &pw = meshes_[mesh].vertices[w];
-      const ET su = volume(a, b, c, pu), sw = volume(a, b, c, pw);
-      const ET t = su / ET(su - sw);
+      const Z su = volume(a, b, c, pu), sw = volume(a, b, c, pw);
+      const ET den = ET(su - sw);
       FT x[3];
-      for (int k = 0; k < 3; ++k) x[k] = FT(ET(ET(pu[k]) + t * ET(ET(pw[k]) - ET(pu[k]))));
+      for (int k = 0; k < 3; ++k) x[k] = FT(ET(ET(su * Z(pw[k]) - sw * Z(pu[k])) / den));
       it->second = EK::Point_3(x[0], x[1], x[2]);
     }
     return it->second;

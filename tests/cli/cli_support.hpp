@@ -1,6 +1,11 @@
-// What the end-to-end tests of the hlr program share: a finished run's exit code and output, and
-// small file helpers.
+// What the end-to-end tests of the hlr program share: starting a process with its output in files,
+// a finished run's exit code and output, and small file helpers.
 #pragma once
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -8,6 +13,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+extern char** environ;
 
 namespace hlr::cli_test {
 
@@ -36,6 +43,48 @@ inline std::vector<std::string> entries(const std::filesystem::path& dir) {
   for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
+}
+
+// A started process whose stdout and stderr go to `stdout` and `stderr` in a folder.
+struct Started {
+  pid_t pid = -1;
+  std::filesystem::path log_dir;
+};
+
+// argv[0] is the program's path. A program that cannot be started fails the test; pid stays -1.
+inline Started start_process(std::vector<std::string> argv_strings, const std::filesystem::path& log_dir) {
+  std::vector<char*> argv;
+  for (auto& s : argv_strings) argv.push_back(s.data());
+  argv.push_back(nullptr);
+  const std::string out_log = (log_dir / "stdout").string(), err_log = (log_dir / "stderr").string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, out_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, err_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  Started started{-1, log_dir};
+  const int rc = posix_spawn(&started.pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) {
+    ADD_FAILURE() << "cannot start " << argv_strings[0];
+    started.pid = -1;
+  }
+  return started;
+}
+
+// Waits for the process and reads what it wrote.
+inline Outcome finish_process(const Started& started) {
+  Outcome run;
+  if (started.pid < 0) return run;
+  int status = 0;
+  waitpid(started.pid, &status, 0);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  run.out = slurp(started.log_dir / "stdout");
+  run.err = slurp(started.log_dir / "stderr");
+  return run;
+}
+
+inline Outcome run_process(std::vector<std::string> argv, const std::filesystem::path& log_dir) {
+  return finish_process(start_process(std::move(argv), log_dir));
 }
 
 inline std::size_t count_lines(const std::string& s) {

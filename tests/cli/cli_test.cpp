@@ -19,13 +19,9 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-extern char** environ;
 
 namespace {
 
@@ -222,30 +218,7 @@ class CliClip : public ::testing::Test {
     return spawn(argv_strings);
   }
 
-  Outcome spawn(std::vector<std::string> argv_strings) const {
-    std::vector<char*> argv;
-    for (auto& s : argv_strings) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const std::string out_log = (dir_ / "logs" / "stdout").string(), err_log = (dir_ / "logs" / "stderr").string();
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, out_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = 0;
-    int rc = posix_spawn(&pid, argv_strings[0].c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    Outcome run;
-    if (rc != 0) {
-      ADD_FAILURE() << "cannot start " << argv_strings[0];
-      return run;
-    }
-    int status = 0;
-    waitpid(pid, &status, 0);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    run.out = slurp(out_log);
-    run.err = slurp(err_log);
-    return run;
-  }
+  Outcome spawn(std::vector<std::string> argv_strings) const { return run_process(std::move(argv_strings), dir_ / "logs"); }
 
   Outcome clip(const fs::path& subject, const fs::path& clip, const std::vector<std::string>& extra = {}) const {
     std::vector<std::string> args{"clip", subject.string(), clip.string(), "-o", out().string()};

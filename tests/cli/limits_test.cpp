@@ -16,12 +16,8 @@
 #include <thread>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-extern char** environ;
 
 namespace {
 
@@ -62,32 +58,11 @@ class CliLimits : public ::testing::Test {
     return path;
   }
 
-  pid_t start(std::vector<std::string> args) const {
+  Started start(std::vector<std::string> args) const {
     args.insert(args.begin(), HLR_BINARY);
-    std::vector<char*> argv;
-    for (auto& s : args) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const std::string out_log = (dir_ / "stdout").string(), err_log = (dir_ / "stderr").string();
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, out_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = 0;
-    const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    EXPECT_EQ(rc, 0) << "cannot start " << argv[0];
-    return pid;
+    return start_process(std::move(args), dir_);
   }
-
-  Outcome finish(pid_t pid) const {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    Outcome run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    run.out = slurp(dir_ / "stdout");
-    run.err = slurp(dir_ / "stderr");
-    return run;
-  }
+  static Outcome finish(const Started& started) { return finish_process(started); }
 
   Outcome hlr(const std::vector<std::string>& args) const { return finish(start(args)); }
 
@@ -123,10 +98,10 @@ TEST_F(CliLimits, SigintStopsTheWorkAndRemovesEveryTemporaryFile) {
   const fs::path grid = bumpy_grid(300);
   for (const int signo : {SIGINT, SIGTERM}) {
     SCOPED_TRACE(signo);
-    const pid_t pid = start(draw_args(grid));
+    const Started started = start(draw_args(grid));
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // well into the solving stages
-    ::kill(pid, signo);
-    const Outcome run = finish(pid);
+    ::kill(started.pid, signo);
+    const Outcome run = finish(started);
     EXPECT_EQ(run.exit_code, 128 + signo) << run.err;
     EXPECT_EQ(count_lines(run.err), 1u) << run.err;
     EXPECT_EQ(run.err.rfind(signo == SIGINT ? "hlr: interrupted (SIGINT)" : "hlr: terminated (SIGTERM)", 0), 0u)

@@ -1,46 +1,28 @@
 // End-to-end tests of `hlr shadows`: outputs written (JSON checked against the hand-computed
 // areas of fixtures/shadows, the CSV against a golden file, the SVG read back), sun studies, and
 // bad input: one line on stderr, exit code 1 or 2, no output file.
+#include "cli_support.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-extern char** environ;
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using namespace hlr::cli_test;
 
 const std::string kBinary = HLR_BINARY;
 const fs::path kShadowFixtures = HLR_SHADOW_FIXTURES;
 const fs::path kGolden = HLR_SHADOW_GOLDEN;
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::size_t count_lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
-
-struct Outcome {
-  int exit_code = -1;
-  std::string out, err;
-};
 
 class CliShadows : public ::testing::Test {
  protected:
@@ -56,37 +38,11 @@ class CliShadows : public ::testing::Test {
     fs::remove_all(dir_, ec);
   }
   fs::path out(const std::string& name) const { return dir_ / "out" / name; }
-  std::vector<std::string> outputs() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_ / "out")) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
+  std::vector<std::string> outputs() const { return entries(dir_ / "out"); }
 
   Outcome hlr(std::vector<std::string> args) const {
     args.insert(args.begin(), kBinary);
-    std::vector<char*> argv;
-    for (auto& s : args) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const std::string out_log = (dir_ / "logs" / "stdout").string(), err_log = (dir_ / "logs" / "stderr").string();
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, out_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = 0;
-    const int rc = posix_spawn(&pid, args[0].c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    Outcome run;
-    if (rc != 0) {
-      ADD_FAILURE() << "cannot start " << args[0];
-      return run;
-    }
-    int status = 0;
-    waitpid(pid, &status, 0);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    run.out = slurp(out_log);
-    run.err = slurp(err_log);
-    return run;
+    return run_process(std::move(args), dir_ / "logs");
   }
 
   // A failed run: exit `code`, one line on stderr starting with `prefix` and containing `needle`,

@@ -85,8 +85,8 @@ int main(int argc, char** argv) {
   commands.push_back(add_check_command(app));
   commands.push_back(add_surfaces_command(app));
   commands.push_back(add_shadows_command(app));
-  commands.push_back(add_clip_command(app));
   commands.push_back(add_mesh_command(app));
+  commands.push_back(add_clip_command(app));
   commands.push_back(add_batch_command(app));
 
   app.footer(

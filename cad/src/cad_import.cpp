@@ -120,8 +120,13 @@ void collect(const TDF_Label& label, const TopLoc_Location& placement, const std
     for (Standard_Integer i = 1; i <= components.Length(); ++i) {
       TDF_Label referred;
       if (!XCAFDoc_ShapeTool::GetReferredShape(components(i), referred)) continue;
+      // The product's name, else the instance's, unless that is only the file's entity number
+      // (OCC's writer numbers NEXT_ASSEMBLY_USAGE_OCCURRENCEs '1', '2', ...).
       std::string part = label_name(referred);
-      if (part.empty()) part = label_name(components(i));
+      if (part.empty()) {
+        part = label_name(components(i));
+        if (std::all_of(part.begin(), part.end(), [](unsigned char c) { return std::isdigit(c); })) part.clear();
+      }
       collect(referred, placement * XCAFDoc_ShapeTool::GetLocation(components(i)), part, out);
     }
     return;

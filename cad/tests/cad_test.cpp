@@ -98,7 +98,8 @@ TEST(CadImport, PartsAndNames) {
 
   auto two = cad::load_cad(fixture("two_solids.step"));
   ASSERT_EQ(two.size(), 2u);
-  EXPECT_NE(two[0].mesh.name, two[1].mesh.name);
+  EXPECT_EQ(two[0].mesh.name, "two_solids#1");  // no product names: the file's stem, numbered
+  EXPECT_EQ(two[1].mesh.name, "two_solids#2");
 
   for (const std::string f : {"plate.iges", "plate.brep", "flange.step", "bracket.step"})
     EXPECT_EQ(cad::load_cad(fixture(f)).size(), 1u) << f;
@@ -313,6 +314,25 @@ TEST(CadCli, StepAndItsMeshDrawAlike) {
       EXPECT_EQ(ja["stats"]["lines_by_kind"]["boundary"], 0) << name;
       EXPECT_EQ(ja["stats"]["lines_by_kind"]["group"], 0) << name;
     }
+  }
+}
+
+// The line oracle on the tessellation `hlr mesh` writes, read back as a mesh file: its B-rep faces
+// are face groups, so its feature set is the drawing's (every B-rep edge, no edge inside a face).
+TEST(CadCli, LineOracleOnTheWrittenMesh) {
+  const Outcome run = hlr_run({"mesh", fixture("plate.step"), "--deflection", "0.5", "-o", out("plate_oracle.off")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ImportReport report;
+  const std::vector<Mesh> meshes{load_mesh(out("plate_oracle.off"), report)};
+  for (const std::string view_name : {"top", "iso"}) {
+    hidden_line::LineOptions options;
+    options.features.crease_degrees = 180;  // groups only: the B-rep's edges
+    const View view = view_named(view_name);
+    hltest::LineRun lines = hltest::run_lines(meshes, view, options);
+    const hltest::LineOracle oracle(meshes, view);
+    const hltest::LineReport check = hltest::check_lines(oracle, lines.set, hltest::check_options_for(options));
+    EXPECT_TRUE(check.ok()) << view_name << ": " << check.summary();
+    EXPECT_GT(lines.set.stats.by_kind[static_cast<int>(FeatureKind::group)], 0u) << view_name;
   }
 }
 

@@ -183,11 +183,18 @@ std::vector<Body> read_iges(const std::string& path) {
   reader.TransferRoots();
   TopoDS_Shape shape = reader.OneShape();
   if (shape.IsNull()) return {};
-  // IGES usually gives faces with edges of their own (its "faces" mode): sewn at OCC's precision
-  // (1e-6 model units) into shells, or the faces would share no edge. Input classification, as
-  // the B-rep's own topology is for STEP.
+  // IGES usually gives faces with edges of their own (its "faces" mode): they are sewn into
+  // shells, or the faces would share no edge. Input classification, as the B-rep's own topology is
+  // for STEP, at the larger of the vertices' own tolerances (what the reader made of the file's
+  // precision) and 1e-5 of the model's size (1e-6 model units left OCC's own faces-mode IGES of the
+  // test plate unsewn; 1e-5 sewed it).
   if (TopExp_Explorer(shape, TopAbs_FACE, TopAbs_SHELL).More()) {
-    BRepBuilderAPI_Sewing sewing(1e-6);
+    Bnd_Box box;
+    BRepBndLib::Add(shape, box);
+    double tolerance = box.IsVoid() ? 1e-6 : 1e-5 * std::sqrt(box.SquareExtent());
+    for (TopExp_Explorer e(shape, TopAbs_VERTEX); e.More(); e.Next())
+      tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(e.Current())));
+    BRepBuilderAPI_Sewing sewing(tolerance);
     sewing.Add(shape);
     sewing.Perform();
     if (!sewing.SewedShape().IsNull()) shape = sewing.SewedShape();

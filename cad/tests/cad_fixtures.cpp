@@ -110,9 +110,11 @@ void write_step(const TopoDS_Shape& s, const std::string& path) {
     throw std::runtime_error(path + ": STEP writer failed");
 }
 
-void write_iges(const TopoDS_Shape& s, const std::string& path) {
+// `brep`: IGES's B-rep mode (shells and solids with shared edges), else its faces mode (each face
+// with edges of its own, as most IGES files are).
+void write_iges(const TopoDS_Shape& s, const std::string& path, bool brep = true) {
   IGESControl_Controller::Init();
-  IGESControl_Writer writer("MM", 1);  // B-rep mode: shells and solids with shared edges
+  IGESControl_Writer writer("MM", brep ? 1 : 0);
   writer.AddShape(s);
   writer.ComputeModel();
   if (!writer.Write(path.c_str())) throw std::runtime_error(path + ": IGES writer failed");
@@ -148,6 +150,7 @@ void write_fixtures(const std::string& dir) {
   const TopoDS_Shape p = plate();
   write_step(p, dir + "/plate.step");
   write_iges(p, dir + "/plate.iges");
+  write_iges(p, dir + "/plate_faces.igs", false);
   if (!BRepTools::Write(p, (dir + "/plate.brep").c_str())) throw std::runtime_error("plate.brep: write failed");
   write_step(flange(), dir + "/flange.step");
   write_step(bracket(), dir + "/bracket.step");

@@ -8,7 +8,8 @@ namespace hlr::cad_test {
 
 // Writes into `dir` (which must exist):
 //   plate.step, plate.iges, plate.brep  100 x 60 x 10 plate, two through holes (d 10) and a
-//                                        counterbored hole (d 12 through, d 20 x 4 deep)
+//                                        counterbored hole (d 12 through, d 20 x 4 deep);
+//   plate_faces.igs                      the plate in IGES's faces mode (no shared edges)
 //   flange.step                          disk d 100 x 12, bore d 30, six bolt holes d 8 on d 70
 //   bracket.step                         L-bracket (60 x 40 x 8 base, 8 x 40 x 50 upright), inner
 //                                        edge filleted r 6, outer corner filleted r 10

@@ -101,7 +101,7 @@ TEST(CadImport, PartsAndNames) {
   EXPECT_EQ(two[0].mesh.name, "two_solids#1");  // no product names: the file's stem, numbered
   EXPECT_EQ(two[1].mesh.name, "two_solids#2");
 
-  for (const std::string f : {"plate.iges", "plate.brep", "flange.step", "bracket.step"})
+  for (const std::string f : {"plate.iges", "plate_faces.igs", "plate.brep", "flange.step", "bracket.step"})
     EXPECT_EQ(cad::load_cad(fixture(f)).size(), 1u) << f;
 
   const Scene scene = cad::load_scene({fixture("assembly.step"), fixture("plate.step")});
@@ -110,8 +110,8 @@ TEST(CadImport, PartsAndNames) {
 }
 
 TEST(CadImport, ClosedSolidsAreClosedManifoldMeshes) {
-  for (const std::string f : {"plate.step", "plate.iges", "plate.brep", "flange.step", "bracket.step", "assembly.step",
-                              "two_solids.step"})
+  for (const std::string f : {"plate.step", "plate.iges", "plate_faces.igs", "plate.brep", "flange.step", "bracket.step",
+                              "assembly.step", "two_solids.step"})
     for (const auto& part : cad::load_cad(fixture(f))) {
       expect_closed_manifold(part.mesh, f + " " + part.mesh.name);
       EXPECT_EQ(part.report.nonmanifold_faces, 0u) << f;

@@ -13,6 +13,10 @@ packages=(
   libgoogle-perftools-dev
   # the sun's position for hlr shadows --sun-at (kernel/src/sun.cpp)
   libnova-dev
+  # STEP, IGES and B-rep input (cad/): OpenCASCADE's readers, BRepMesh and XCAF; data-exchange-dev
+  # brings headers the modelling packages need (NCollection_AliasedArray.hxx)
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-ocaf-dev libocct-data-exchange-dev
   # DXF, PNG and PDF writers (export/)
   libdxflib-dev libpng-dev libcairo2-dev
   # tests and benchmarks

@@ -59,7 +59,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
   display.stage("reading " + std::to_string(options.scene.meshes.size()) +
                 (options.scene.meshes.size() == 1 ? " mesh" : " meshes"));
-  const Scene scene = read_scene(options.scene.meshes, options.scene.limits);
+  const Scene scene = read_scene(options.scene.meshes, options.scene.limits, options.scene.cad);
   const double read = seconds_since(start);
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;

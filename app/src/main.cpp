@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_check_command(app));
   commands.push_back(add_surfaces_command(app));
   commands.push_back(add_shadows_command(app));
+  commands.push_back(add_mesh_command(app));
   commands.push_back(add_clip_command(app));
   commands.push_back(add_batch_command(app));
 
@@ -95,6 +96,8 @@ int main(int argc, char** argv) {
       "  hlr sheet fixtures/parts/flange.off --views front,top,right,iso -o out/flange.pdf\n"
       "  hlr surfaces fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg\n"
       "  hlr shadows fixtures/shadows/box_on_ground.off --sun 1,2,-4 -o out/box_shadows.json\n"
+      "  hlr draw part.step --view front --deflection 0.05 -o out/part.dxf\n"
+      "  hlr mesh part.step -o out/part.off\n"
       "  hlr clip fixtures/clip/subject.json fixtures/clip/clip.json -o out/clip-result.json\n"
       "  hlr batch catalogue.json --jobs 4\n"
       "\n"

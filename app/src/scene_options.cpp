@@ -6,12 +6,13 @@
 #include <algorithm>
 #include <cctype>
 #include <iostream>
+#include <cmath>
 #include <limits>
 
 namespace hlr::app {
 
 void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel) {
-  cmd.add_option("meshes", options.meshes, "mesh files (OFF, OBJ, STL, PLY), drawn together as one scene")
+  cmd.add_option("meshes", options.meshes, std::string(kInputKinds) + ", drawn together as one scene")
       ->required()
       ->type_name("MESH...");
   auto* view = cmd.add_option("--view", options.view, std::string("named view: ") + named_view_list)
@@ -33,6 +34,28 @@ void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel) {
       ->type_name("N");
   if (kernel) add_kernel_option(cmd, options.kernel);
   add_limit_options(cmd, options.limits);
+  add_cad_options(cmd, options.cad);
+}
+
+void add_cad_options(CLI::App& cmd, cad::CadOptions& cad) {
+  // A deflection of 0, below 0 or NaN would leave BRepMesh nothing to stop at: refused here.
+  cmd.add_option("--deflection", cad.deflection,
+                 "CAD models: the tessellation's largest distance from the surfaces, in model units "
+                 "(default: 0.001 x the model's bounding-box diagonal)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            double v = 0;
+            if (!CLI::detail::lexical_cast(text, v) || !(v > 0) || !std::isfinite(v))
+              return "must be a positive number of model units, not " + text;
+            return "";
+          },
+          "D > 0"))
+      ->type_name("D");
+  cmd.add_option("--angular-deflection", cad.angular_degrees,
+                 "CAD models: the tessellation's largest angle between neighbouring normals, in degrees")
+      ->check(CLI::Range(0.01, 90.0))
+      ->capture_default_str()
+      ->type_name("DEG");
 }
 
 void add_limit_options(CLI::App& cmd, RunLimits& limits, bool faces) {
@@ -76,11 +99,11 @@ std::optional<View> resolve_view(const SceneOptions& options) {
   return view;
 }
 
-Scene read_scene(const std::vector<std::string>& paths, const RunLimits& limits) {
+Scene read_scene(const std::vector<std::string>& paths, const RunLimits& limits, const cad::CadOptions& cad) {
   Scene scene;
   {
     const StopAtOnce reading;  // the readers do not poll the stop flag
-    scene = hlr::load_scene(paths);
+    scene = hlr::cad::load_scene(paths, cad);
   }
   if (scene.input.faces > limits.max_faces)
     throw UserError(paths.size() == 1 ? paths.front() : paths.front() + " and " + std::to_string(paths.size() - 1) + " more",

@@ -4,6 +4,7 @@
 
 #include "errors.hpp"
 
+#include <hlr/cad/cad.hpp>
 #include <hlr/hidden_line/jobs.hpp>
 #include <hlr/kernel/view.hpp>
 
@@ -36,10 +37,17 @@ struct SceneOptions {
   std::string kernel = "exact";
   int threads = 0;  // 0: every core
   RunLimits limits;
+  cad::CadOptions cad;
 };
 
-// MESH... (positional), --view, --dir, --up, --threads, the limits and, unless `kernel` is
-// false, --kernel.
+// --deflection and --angular-deflection: how CAD models (STEP, IGES, BREP) are tessellated.
+void add_cad_options(CLI::App& cmd, cad::CadOptions& cad);
+
+// What the MESH... argument reads, for its help line.
+inline constexpr const char* kInputKinds = "mesh files (OFF, OBJ, STL, PLY) or CAD models (STEP, IGES, BREP)";
+
+// MESH... (positional), --view, --dir, --up, --threads, the limits, the CAD options and, unless
+// `kernel` is false, --kernel.
 void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel = true);
 
 // Limits oneTBB to options.threads for as long as the returned object lives (0: no limit). The
@@ -49,9 +57,9 @@ std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options);
 // The view the options name, or nothing after a one-line usage error on stderr.
 std::optional<View> resolve_view(const SceneOptions& options);
 
-// Reads every mesh (hlr::load_scene: throws ImportError) and refuses a scene beyond
-// limits.max_faces (UserError).
-Scene read_scene(const std::vector<std::string>& paths, const RunLimits& limits);
+// Reads every mesh and CAD model (hlr::cad::load_scene: throws ImportError) and refuses a scene
+// beyond limits.max_faces (UserError).
+Scene read_scene(const std::vector<std::string>& paths, const RunLimits& limits, const cad::CadOptions& cad);
 
 // The importer's warnings, printed once a run has succeeded (a failed run prints one line: its
 // error).

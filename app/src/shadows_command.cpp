@@ -32,6 +32,7 @@ struct ShadowsOptions {
   std::vector<std::string> outputs;
   int threads = 0;
   RunLimits limits;
+  cad::CadOptions cad;
 };
 
 enum class Format { json, csv, svg };
@@ -95,7 +96,7 @@ int run(const ShadowsOptions& options) {
 
   const Deadline deadline(options.limits.timeout);
   ProgressDisplay display(ProgressDisplay::mode_for(options.limits.progress));
-  const Scene scene = read_scene(options.meshes, options.limits);
+  const Scene scene = read_scene(options.meshes, options.limits, options.cad);
   const auto& input = scene.input;
   const double read = seconds_since(start);
 
@@ -133,7 +134,7 @@ Subcommand add_shadows_command(CLI::App& parent) {
   auto options = std::make_shared<ShadowsOptions>();
   CLI::App* cmd = parent.add_subcommand(
       "shadows", "Find which part of every face each light reaches, exactly, and the shadows on the rest.");
-  cmd->add_option("meshes", options->meshes, "mesh files (OFF, OBJ, STL, PLY), lit together as one scene")
+  cmd->add_option("meshes", options->meshes, std::string(kInputKinds) + ", lit together as one scene")
       ->required()
       ->type_name("MESH...");
   cmd->add_option("--sun", options->suns,
@@ -160,6 +161,7 @@ Subcommand add_shadows_command(CLI::App& parent) {
       ->capture_default_str()
       ->type_name("N");
   add_limit_options(*cmd, options->limits);
+  add_cad_options(*cmd, options->cad);
   cmd->footer(
       "Examples:\n"
       "  hlr shadows fixtures/shadows/box_on_ground.off --sun 1,2,-4 -o out/box.json -o out/box.csv\n"

@@ -29,6 +29,7 @@ struct SheetOptions {
   std::string kernel = "exact";
   int threads = 0;
   RunLimits limits;
+  cad::CadOptions cad;
   exporter::DrawOptions lines;
   StyleOptions style;
   exporter::SheetFields fields;
@@ -103,7 +104,7 @@ int run(const SheetOptions& options) {
   const Deadline deadline(options.limits.timeout);
   ProgressDisplay display(ProgressDisplay::mode_for(options.limits.progress));
   display.stage("reading " + std::to_string(options.meshes.size()) + (options.meshes.size() == 1 ? " mesh" : " meshes"));
-  const Scene scene = read_scene(options.meshes, options.limits);
+  const Scene scene = read_scene(options.meshes, options.limits, options.cad);
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;
   job.progress = display.progress();
@@ -161,7 +162,7 @@ Subcommand add_sheet_command(CLI::App& parent) {
   auto options = std::make_shared<SheetOptions>();
   CLI::App* cmd = parent.add_subcommand(
       "sheet", "Draw several views of a scene on one sheet: aligned after ISO 5456-2, one scale, a title block.");
-  cmd->add_option("meshes", options->meshes, "mesh files (OFF, OBJ, STL, PLY), drawn together as one scene")
+  cmd->add_option("meshes", options->meshes, std::string(kInputKinds) + ", drawn together as one scene")
       ->required()
       ->type_name("MESH...");
   cmd->add_option("-o,--output", options->outputs,
@@ -191,6 +192,7 @@ Subcommand add_sheet_command(CLI::App& parent) {
       ->type_name("METHOD");
   add_line_options(*cmd, options->lines);
   add_limit_options(*cmd, options->limits);
+  add_cad_options(*cmd, options->cad);
   options->style.sheet = "A3";
   add_style_options(*cmd, options->style);
   cmd->add_option("--title", options->fields.title, "title block: title")->type_name("TEXT");

@@ -32,5 +32,6 @@ Subcommand add_draw_command(CLI::App& parent);
 Subcommand add_sheet_command(CLI::App& parent);
 Subcommand add_check_command(CLI::App& parent);
 Subcommand add_batch_command(CLI::App& parent);
+Subcommand add_mesh_command(CLI::App& parent);
 
 }  // namespace hlr::app

@@ -14,6 +14,7 @@ namespace {
 hidden_line::LineOptions line_options(const DrawOptions& options) {
   hidden_line::LineOptions lines;
   lines.features.crease_degrees = options.crease;
+  lines.features.smooth_edges = options.smooth_edges;
   lines.intersections = options.intersections;
   lines.stop = options.progress.stop;
   return lines;

@@ -9,6 +9,7 @@
 // dump of the whole document as one nlohmann::json tree. write_lines_json hands the text on in
 // blocks as it goes, so that a drawing of a million pieces is never held whole (lines_json
 // collects the blocks).
+#include <algorithm>
 #include <hlr/export/lines.hpp>
 
 #include "document_json.hpp"
@@ -145,7 +146,11 @@ json stats_json(const LineDrawing& drawing, double write) {
 namespace detail {
 
 json input_json(const InputInfo& input) {
-  return {{"files", input.files}, {"faces", input.faces}, {"vertices", input.vertices}};
+  json out = {{"files", input.files}, {"faces", input.faces}, {"vertices", input.vertices}};
+  // Part names from the source (a CAD model's products), only where a source gave one.
+  if (std::any_of(input.parts.begin(), input.parts.end(), [](const std::string& p) { return !p.empty(); }))
+    out["parts"] = input.parts;
+  return out;
 }
 
 json view_json(const ViewInfo& v) {

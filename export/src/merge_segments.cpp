@@ -251,8 +251,12 @@ std::vector<std::string> part_names(const LineDrawing& drawing) {
     std::string name;
     if (m < drawing.input.files.size()) {
       std::string stem = drawing.input.files[m];
-      if (const auto slash = stem.find_last_of("/\\"); slash != std::string::npos) stem = stem.substr(slash + 1);
-      if (const auto dot = stem.find_last_of('.'); dot != std::string::npos && dot > 0) stem = stem.substr(0, dot);
+      if (m < drawing.input.parts.size() && !drawing.input.parts[m].empty()) {
+        stem = drawing.input.parts[m];  // named by its source (a STEP product): no file stem
+      } else {
+        if (const auto slash = stem.find_last_of("/\\"); slash != std::string::npos) stem = stem.substr(slash + 1);
+        if (const auto dot = stem.find_last_of('.'); dot != std::string::npos && dot > 0) stem = stem.substr(0, dot);
+      }
       for (char c : stem) {
         const bool ok = std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 128;
         if (ok || c == '_' || c == '-') name += c;

@@ -115,7 +115,9 @@ void paint_draw_title(Canvas& c, const LineDrawing& drawing, const SheetFrame& l
   c.end();
 
   std::string files;
-  for (const auto& f : drawing.input.files) files += (files.empty() ? "" : ", ") + base_name(f);
+  std::string last;  // a CAD model's solids are meshes of one file: named once
+  for (const auto& f : drawing.input.files)
+    if (f != last) files += (files.empty() ? "" : ", ") + base_name(last = f);
   std::string view = drawing.view.name.empty() ? "custom" : drawing.view.name;
   if (view == "custom") {
     const auto& d = drawing.view.direction;

@@ -118,7 +118,8 @@ bool dihedral_above(const EK::Vector_3& n1, const EK::Vector_3& n2, double c) {
 // ---------------------------------------------------------------------------------------------
 // Feature edges.
 
-std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, const View& view, double crease_degrees) {
+std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, const View& view, double crease_degrees,
+                                           bool smooth_edges) {
   const double cos_threshold = std::cos(crease_degrees * std::numbers::pi / 180.0);
   const ExactViewBasis basis(view);
   const EK::Vector_3 toward = basis.toward_viewer();
@@ -136,6 +137,7 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
     // uses are internal to one non-planar face's fan (DESIGN.md: the crease rule only).
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, bool>>> edges;
     std::map<std::pair<std::uint32_t, std::uint32_t>, bool> fan;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, unsigned> source;  // B-rep edge bits, or'ed
     const std::vector<int> sides = closed_sides(mesh);
     for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
       const auto& face = mesh.faces[f];
@@ -145,6 +147,8 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
         const bool internal = !mesh.fan_edges.empty() && (mesh.fan_edges[f] >> i & 1u);
         auto [it, first] = fan.try_emplace({std::min(p, q), std::max(p, q)}, internal);
         if (!first) it->second = it->second && internal;
+        if (!mesh.source_edges.empty() && i < 4 && (mesh.source_edges[f] >> i & 1u))
+          source[{std::min(p, q), std::max(p, q)}] |= 1u | ((mesh.source_edges[f] >> (i + 4) & 1u) << 1);
       }
     }
     for (const auto& [key, uses] : edges) {
@@ -171,6 +175,12 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
         const bool crease_only = fan.at(key);
         if (turns && !crease_only) {
           e.kind = FeatureKind::silhouette;
+        } else if (!mesh.source_edges.empty()) {
+          // B-rep edges, whatever the angle; tangent ones only with smooth edges (features.hpp).
+          const auto s = source.find(key);
+          const unsigned bits = s == source.end() ? 0u : s->second;
+          if (!(bits & 1u) || ((bits & 2u) && !smooth_edges)) continue;
+          e.kind = FeatureKind::crease;
         } else if (dihedral_above(nf, ng, cos_threshold)) {
           e.kind = FeatureKind::crease;
         } else if (!mesh.face_group.empty() && mesh.face_group[f] != mesh.face_group[g]) {
@@ -682,7 +692,7 @@ class LineChecker {
   }
 
   void features() {
-    const auto want = oracle_features(oracle_.meshes(), oracle_.view(), options_.crease_degrees);
+    const auto want = oracle_features(oracle_.meshes(), oracle_.view(), options_.crease_degrees, options_.smooth_edges);
     std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, FeatureKind> expected;
     for (const auto& e : want) expected[{e.mesh, e.v0, e.v1}] = e.kind;
     std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::size_t> have;

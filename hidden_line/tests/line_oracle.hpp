@@ -96,7 +96,8 @@ struct OracleFeature {
 // the same direction (inconsistent orientation), the face with the lower index keeps its
 // orientation and the other is flipped; this matters only for the silhouette test when one of the
 // two faces is seen edge-on (features.hpp does not say which face is flipped).
-std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, const View& view, double crease_degrees);
+std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, const View& view, double crease_degrees,
+                                           bool smooth_edges = false);
 
 // ---------------------------------------------------------------------------------------------
 // Penetrations (view-independent; compute once per scene).
@@ -176,6 +177,7 @@ class LineOracle {
 
 struct LineCheckOptions {
   double crease_degrees = 30;  // as given to classify_lines
+  bool smooth_edges = false;   // likewise (CAD meshes' tangent edges)
   bool intersections = true;   // as given to classify_lines; false: no intersection line may appear
   bool completeness = true;    // (d) completeness (needs find_penetrations)
   std::size_t max_messages = 12;

@@ -97,6 +97,7 @@ inline std::vector<std::string> line_signature(const hidden_line::LineSet<ExactK
 inline LineCheckOptions check_options_for(const hidden_line::LineOptions& options) {
   LineCheckOptions c;
   c.crease_degrees = options.features.crease_degrees;
+  c.smooth_edges = options.features.smooth_edges;
   c.intersections = options.intersections;
   return c;
 }

@@ -145,6 +145,11 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
       const bool fan = first[0].fan && first[1].fan;  // inside one non-planar face: crease rule only
       if (turns && !fan) {
         edge.kind = FeatureKind::silhouette;
+      } else if (!mesh.source_edges.empty()) {
+        // Features from the B-rep: its edges, not the crease rule (features.hpp).
+        const std::uint8_t source = first[0].source | first[1].source;
+        if (!(source & 1u) || ((source & 2u) && !options.smooth_edges)) return;
+        edge.kind = FeatureKind::crease;
       } else if (normals.crease(f, g, flip, cos_threshold)) {
         edge.kind = FeatureKind::crease;
       } else if (!mesh.face_group.empty() && mesh.face_group[f] != mesh.face_group[g]) {

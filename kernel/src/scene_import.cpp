@@ -314,6 +314,7 @@ void Scene::add(Mesh mesh, const ImportReport& report) {
   input.faces += mesh.faces.size();
   input.vertices += mesh.vertices.size();
   input.welded_vertices += report.welded_vertices;
+  input.parts.push_back(mesh.name);
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
   meshes.push_back(std::move(mesh));
 }

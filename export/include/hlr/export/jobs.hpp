@@ -30,6 +30,7 @@ struct DrawOptions {
   KernelKind kernel = KernelKind::exact;
   double crease = 30;          // degrees: an edge is a crease when its faces meet at more than this
   bool intersections = true;   // lines where faces penetrate
+  bool smooth_edges = false;   // tangent B-rep edges of CAD models drawn too (FeatureOptions)
   // Leave the exact solution (polygons, visibility map, lines, drawing segments) to the process's
   // exit instead of freeing it once the drawing is rounded: for a program that writes its outputs
   // and exits. Freeing millions of lazy exact numbers one by one took 2.9 s of a 46 s run on 300k

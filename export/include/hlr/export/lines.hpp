@@ -188,7 +188,8 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
 // mm on the sheet, that is merge_distance / scale in model units at the drawing's scale.
 MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style);
 
-// The name of each part (mesh) of a drawing, from its input file's stem: letters, digits, '_' and
+// The name of each part (mesh) of a drawing, from its name in the source where it has one
+// (InputInfo::parts: a STEP product), else from its input file's stem: letters, digits, '_' and
 // '-' kept, any other run of characters made one '_', "mesh" when nothing is left, and "-2", "-3",
 // ... added where a name (compared in any letter case, as DXF layer names are) is taken already.
 // One name per input file, and "mesh-N" for a mesh index beyond them.

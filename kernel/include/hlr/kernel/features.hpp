@@ -17,6 +17,12 @@
 // The internal edges of a non-planar face's fan (Mesh::fan_edges) are feature lines by the crease
 // rule only (DESIGN.md "Feature lines").
 //
+// A mesh whose source gives its feature edges (Mesh::source_edges, a CAD model's B-rep) has no
+// crease and no group rule: an edge of two faces is a silhouette as above, else a crease when it
+// lies on a B-rep edge (whatever the dihedral angle) unless that B-rep edge is tangent and
+// smooth_edges is off, else nothing; the internal edges of a B-rep face's tessellation and its
+// seams are never creases. Boundary and non-manifold edges are as above.
+//
 // Everything is decided exactly on the input doubles (CGAL Epeck), so the same edges are found
 // on every kernel. The threshold is the one parameter taken as given: its cosine, rounded to
 // double, is compared exactly with the cosine of each dihedral angle.
@@ -43,6 +49,7 @@ struct FeatureEdge {
 
 struct FeatureOptions {
   double crease_degrees = 30;  // in [0, 180]
+  bool smooth_edges = false;   // draw the tangent B-rep edges of CAD models (Mesh::source_edges)
 };
 
 // The feature edges of one mesh seen along `view`, in order of (v0, v1).

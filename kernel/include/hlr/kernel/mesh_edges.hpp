@@ -18,6 +18,7 @@ struct EdgeUse {
   std::uint32_t face;  // index into mesh.faces
   bool forward;        // the face runs min -> max
   bool fan = false;    // an internal edge of a non-planar face's fan (Mesh::fan_edges)
+  std::uint8_t source = 0;  // Mesh::source_edges of this edge: 1 a B-rep edge, 3 a tangent one
 };
 
 inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
@@ -34,7 +35,9 @@ inline std::vector<EdgeUse> edge_uses(const Mesh& mesh) {
     for (std::size_t i = 0; i < face.size(); ++i) {
       const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
       const bool fan = !mesh.fan_edges.empty() && (mesh.fan_edges[f] >> i & 1u);
-      uses.push_back({edge_key(a, b), f, a < b, fan});
+      const std::uint8_t bits = mesh.source_edges.empty() || i >= 4 ? 0 : mesh.source_edges[f];
+      const std::uint8_t source = (bits >> i & 1u) ? std::uint8_t(1u | ((bits >> (i + 4) & 1u) << 1)) : 0;
+      uses.push_back({edge_key(a, b), f, a < b, fan, source});
     }
   }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {

@@ -70,6 +70,13 @@ struct Mesh {
   std::vector<std::uint8_t> fan_edges;
   std::vector<std::int32_t> face_group;           // per face: group id (see above), or empty
   std::vector<std::string> group_names;           // group_names[id]: a readable name of group id
+  // Feature edges given by the source instead of the crease rule (a CAD model's B-rep edges,
+  // hlr/cad/cad.hpp), or empty for a mesh file. Per face: bit i (edge i, corner i to corner i + 1)
+  // set when the edge lies on a B-rep edge between two B-rep faces; bit i + 4 set when that B-rep
+  // edge is also tangent (its faces meet smoothly, as at a fillet's boundary). features.hpp says
+  // how they are drawn. Faces of at most 4 corners (the CAD import makes triangles).
+  std::vector<std::uint8_t> source_edges;
+  std::string name;  // the part's name where the source names it (a STEP product), else empty
 };
 
 struct ImportReport {
@@ -104,6 +111,9 @@ struct InputInfo {
   std::vector<std::string> files;
   std::size_t faces = 0, vertices = 0;
   std::size_t welded_vertices = 0;  // stats: vertices import replaced by an equal earlier one
+  // Per mesh: its Mesh::name ("" when the file names the part: export's part_names takes the
+  // file's stem then). Beside `files`, which has the file of each mesh.
+  std::vector<std::string> parts;
 };
 
 // The meshes of one drawing, and what was read.

@@ -97,22 +97,26 @@ void put_color(std::string& out, std::int64_t id) {
 std::string document(const Scene& scene, Format format, const std::vector<std::string>& parts) {
   const Flat flat = flatten(scene, parts);
   std::string out;
+  // OFF and ASCII PLY share the body: one point per line, then "n v0 ... [r g b]" per face.
+  auto points_and_counted_faces = [&] {
+    for (const Mesh& mesh : scene.meshes)
+      for (const auto& p : mesh.vertices) {
+        put_point(out, p);
+        out += '\n';
+      }
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m)
+      for (std::size_t f = 0; f < scene.meshes[m].faces.size(); ++f) {
+        const auto& face = scene.meshes[m].faces[f];
+        out += std::to_string(face.size());
+        for (std::uint32_t v : face) out += ' ' + std::to_string(flat.offset[m] + v);
+        if (flat.grouped) put_color(out, flat.group[m][f]);
+        out += '\n';
+      }
+  };
   switch (format) {
     case Format::off: {
       out += "OFF\n" + std::to_string(flat.vertices) + ' ' + std::to_string(flat.faces) + " 0\n";
-      for (const Mesh& mesh : scene.meshes)
-        for (const auto& p : mesh.vertices) {
-          put_point(out, p);
-          out += '\n';
-        }
-      for (std::size_t m = 0; m < scene.meshes.size(); ++m)
-        for (std::size_t f = 0; f < scene.meshes[m].faces.size(); ++f) {
-          const auto& face = scene.meshes[m].faces[f];
-          out += std::to_string(face.size());
-          for (std::uint32_t v : face) out += ' ' + std::to_string(flat.offset[m] + v);
-          if (flat.grouped) put_color(out, flat.group[m][f]);
-          out += '\n';
-        }
+      points_and_counted_faces();
       break;
     }
     case Format::obj: {
@@ -167,19 +171,7 @@ std::string document(const Scene& scene, Format format, const std::vector<std::s
              "\nproperty list uchar int vertex_indices\n";
       if (flat.grouped) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
       out += "end_header\n";
-      for (const Mesh& mesh : scene.meshes)
-        for (const auto& p : mesh.vertices) {
-          put_point(out, p);
-          out += '\n';
-        }
-      for (std::size_t m = 0; m < scene.meshes.size(); ++m)
-        for (std::size_t f = 0; f < scene.meshes[m].faces.size(); ++f) {
-          const auto& face = scene.meshes[m].faces[f];
-          out += std::to_string(face.size());
-          for (std::uint32_t v : face) out += ' ' + std::to_string(flat.offset[m] + v);
-          if (flat.grouped) put_color(out, flat.group[m][f]);
-          out += '\n';
-        }
+      points_and_counted_faces();
       break;
     }
   }

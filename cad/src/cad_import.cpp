@@ -1,6 +1,7 @@
 // load_cad (hlr/cad/cad.hpp): OCC reads and tessellates the model; the triangles, welded along
 // the B-rep's shared edges and vertices, go through kernel's make_mesh like any mesh.
 #include <hlr/cad/cad.hpp>
+#include <hlr/kernel/mesh_edges.hpp>  // UnionFind: its root is the lowest node
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
@@ -229,19 +230,6 @@ std::vector<TopoDS_Shape> split_bodies(const TopoDS_Shape& shape) {
   return out;
 }
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the first node stays the representative
-  }
-};
 
 std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
   return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);

@@ -131,6 +131,7 @@ double angle_between(const EK::Vector_3& n, const EK::Vector_3& m) {
   const double dot = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
   return std::atan2(cross, dot) * 180 / std::numbers::pi;
 }
+
 // Where the boundary of a triangle meets the plane of a face it straddles: two points, corners in
 // the plane or crossings of edges with it, in lexicographic order (the order along the line the
 // two planes meet in). Built from the input doubles, not from that line: a crossing of edge i j
@@ -161,7 +162,7 @@ class TriangleChords {
       if (side[k] == 0) out[n++] = input_point<EK>(m, u);
       else if (side[k] * side[(k + 1) % 3] < 0) out[n++] = crossing(mesh, u, w, a, b, c, plane_id);
     }
-    if (n != 2) throw std::logic_error("a straddling triangle meets the plane in two points");
+    if (n != 2) throw std::logic_error("a triangle straddling a plane did not meet it in two points");
     if (CGAL::compare_xyz(out[1], out[0]) == CGAL::SMALLER) std::swap(out[0], out[1]);
     return out;
   }

@@ -684,7 +684,7 @@ TEST(LinesHand, TriangleSoupsDrawAsTheWeldedMesh) {
   for (const char* name : {"iso", "front", "top"}) {
     const View view = view_named(name);
     const auto want = line_signature(run_and_check({box}, view, "box"), false);
-    for (const std::string file : {fixture_dir() + "/soup_box.off", fixture_dir() + "/../meshes/soup_box.obj",
+    for (const std::string& file : {fixture_dir() + "/soup_box.off", fixture_dir() + "/../meshes/soup_box.obj",
                                    fixture_dir() + "/../meshes/soup_box.ply"}) {
       const auto& meshes = scene_meshes(file);
       EXPECT_EQ(line_signature(run_and_check(meshes, view, file), false), want) << file << " " << name;
@@ -710,7 +710,9 @@ TEST(LinesHand, NonPlanarQuadsAreFans) {
       folded += facing(mesh.faces[2 * q], view.direction) != facing(mesh.faces[2 * q + 1], view.direction);
     const LineSetX set = run_and_check(fixture("twisted_quads.off"), view, "twisted_quads");
     for (const auto& l : set.lines)
-      if (l.v1 - l.v0 == 6) EXPECT_EQ(l.kind, FeatureKind::crease) << l.v0 << "-" << l.v1 << " in " << view.name;
+      if (l.v1 - l.v0 == 6) {
+        EXPECT_EQ(l.kind, FeatureKind::crease) << l.v0 << "-" << l.v1 << " in " << view.name;
+      }
   }
   EXPECT_GT(folded, 0u) << "no view folds a quad: the test tests nothing";
 }

@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,6 +45,16 @@ inline std::vector<std::string> entries(const std::filesystem::path& dir) {
   for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
+}
+
+// A new folder PREFIX-XXXXXX in the temporary directory, with the given subfolders; empty when it
+// cannot be made.
+inline std::filesystem::path make_temp_dir(const std::string& prefix, std::initializer_list<const char*> subfolders) {
+  std::string templ = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
+  if (::mkdtemp(templ.data()) == nullptr) return {};
+  const std::filesystem::path dir = templ;
+  for (const char* sub : subfolders) std::filesystem::create_directories(dir / sub);
+  return dir;
 }
 
 // A started process whose stdout and stderr go to `stdout` and `stderr` in a folder.

@@ -182,12 +182,8 @@ Q twice_input_area(const InputContours& polygons) {
 class CliClip : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string templ = (fs::temp_directory_path() / "hlr-cli-test-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(templ.data()), nullptr);
-    dir_ = templ;
-    fs::create_directories(dir_ / "in");
-    fs::create_directories(dir_ / "out");
-    fs::create_directories(dir_ / "logs");
+    dir_ = make_temp_dir("hlr-cli-test", {"in", "out", "logs"});
+    ASSERT_FALSE(dir_.empty());
   }
   void TearDown() override {
     std::error_code ec;

@@ -28,10 +28,8 @@ using namespace hlr::cli_test;
 class CliLimits : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string templ = (fs::temp_directory_path() / "hlr-limits-test-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(templ.data()), nullptr);
-    dir_ = templ;
-    fs::create_directories(dir_ / "out");
+    dir_ = make_temp_dir("hlr-limits-test", {"out"});
+    ASSERT_FALSE(dir_.empty());
   }
   void TearDown() override {
     std::error_code ec;

@@ -27,11 +27,8 @@ const fs::path kGolden = HLR_SHADOW_GOLDEN;
 class CliShadows : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string templ = (fs::temp_directory_path() / "hlr-shadows-test-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(templ.data()), nullptr);
-    dir_ = templ;
-    fs::create_directories(dir_ / "out");
-    fs::create_directories(dir_ / "logs");
+    dir_ = make_temp_dir("hlr-shadows-test", {"out", "logs"});
+    ASSERT_FALSE(dir_.empty());
   }
   void TearDown() override {
     std::error_code ec;

@@ -7,7 +7,8 @@
 // planes meet, with ends built from the input doubles (TriangleChords), and the chords overlap.
 // For other faces, that line is intersected with the relative interior of each face in the face's
 // own plane (projected along the normal's largest axis), and the two interval sets, measured with
-// one parameter along the line, are intersected.
+// one parameter along the line, are intersected. Both the pair search and the pieces run on as
+// many threads as are allowed, with the same result for any number.
 #include "lines_impl.hpp"
 #include "sources_impl.hpp"
 
@@ -18,6 +19,9 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
 
 #include <array>
 #include <cmath>
@@ -254,14 +258,27 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     }
     return true;
   };
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  std::size_t polls = 0;
-  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
-    stop.check_every(polls, 4096);
+  // The candidate pairs that cross, sorted: the callback runs on several threads when more than
+  // one is allowed, so each collects its own and the sort makes the order one.
+  struct Found {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    std::size_t polls = 0;
+  };
+  tbb::enumerable_thread_specific<Found> found;
+  auto test_boxes = [&](const Box& x, const Box& y) {
+    Found& mine = found.local();
+    stop.check_every(mine.polls, 4096);
     const std::size_t i = std::min(x.info(), y.info()), j = std::max(x.info(), y.info());
-    if (crosses(faces[i], faces[j])) pairs.emplace_back(i, j);
-  });
+    if (crosses(faces[i], faces[j])) mine.pairs.emplace_back(i, j);
+  };
+  if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1)
+    CGAL::box_self_intersection_d<CGAL::Parallel_tag>(boxes.begin(), boxes.end(), test_boxes);
+  else
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), test_boxes);
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (const Found& f : found) pairs.insert(pairs.end(), f.pairs.begin(), f.pairs.end());
   std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
   // Pieces of one pair of coplanar groups lie on one line; they are joined below.
   using GroupPair = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>;
@@ -270,54 +287,68 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     std::uint32_t face_a, face_b;
     double meeting_degrees;
   };
-  std::map<GroupPair, std::vector<Piece>> pieces;
-  TriangleChords chords(meshes);
   auto plane_of = [&](const FaceRef& r) {
     const auto& pv = topo[r.mesh].plane_vertices[r.face];
     const Mesh& m = meshes[r.mesh];
     return EK::Plane_3(input_point<EK>(m, pv[0]), input_point<EK>(m, pv[1]), input_point<EK>(m, pv[2]));
   };
-  for (const auto& [i, j] : pairs) {
-    stop.check_every(polls, 256);
-    FaceRef f = faces[i], g = faces[j];
-    // One key per pair of groups, whichever face came first.
-    if (std::pair(g.mesh, topo[g.mesh].coplanar_group[g.face]) < std::pair(f.mesh, topo[f.mesh].coplanar_group[f.face]))
-      std::swap(f, g);
-    const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);
-    const GroupPair key{f.mesh, topo[f.mesh].coplanar_group[f.face], g.mesh, topo[g.mesh].coplanar_group[g.face]};
-    if (meshes[f.mesh].faces[f.face].size() == 3 && meshes[g.mesh].faces[g.face].size() == 3) {
-      // Two triangles: the open chords each cuts from the line of the two planes, overlapped.
-      const double meeting_degrees = angle_between(pf.orthogonal_vector(), pg.orthogonal_vector());
-      auto chord = [&](const FaceRef& t, const FaceRef& other) {
-        const auto& pv = topo[other.mesh].plane_vertices[other.face];
-        const Mesh& om = meshes[other.mesh];
-        const std::uint64_t plane_id = (std::uint64_t(other.mesh) << 32) | topo[other.mesh].coplanar_group[other.face];
-        return chords.chord(t.mesh, t.face, om.vertices[pv[0]], om.vertices[pv[1]], om.vertices[pv[2]], plane_id);
-      };
-      const auto in_f = chord(f, g), in_g = chord(g, f);
-      const EK::Point_3& lo = CGAL::compare_xyz(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
-      const EK::Point_3& hi = CGAL::compare_xyz(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
-      if (CGAL::compare_xyz(lo, hi) == CGAL::SMALLER) pieces[key].push_back({lo, hi, f.face, g.face, meeting_degrees});
-      continue;
-    }
-    const auto meet = CGAL::intersection(pf, pg);
-    if (!meet) continue;
-    const EK::Line_3* line = boost::get<EK::Line_3>(&*meet);  // CGAL 5: boost::variant
-    if (!line) continue;
-    const EK::Point_3 p = line->point();
-    const double meeting_degrees = angle_between(pf.orthogonal_vector(), pg.orthogonal_vector());
-    const EK::Vector_3 d = line->to_vector();
-    const auto in_f = interior_intervals(meshes[f.mesh], meshes[f.mesh].faces[f.face], pf.orthogonal_vector(), p, d);
-    const auto in_g = interior_intervals(meshes[g.mesh], meshes[g.mesh].faces[g.face], pg.orthogonal_vector(), p, d);
-    for (const Interval& x : in_f)
-      for (const Interval& y : in_g) {
-        const FT lo = CGAL::max(x.first, y.first), hi = CGAL::min(x.second, y.second);
-        if (!(lo < hi)) continue;
-        EK::Point_3 a = p + lo * d, b = p + hi * d;
-        if (CGAL::compare_xyz(b, a) == CGAL::SMALLER) std::swap(a, b);
-        pieces[key].push_back({a, b, f.face, g.face, meeting_degrees});
+  // The pairs in fixed chunks, each with its own crossings (pairs are sorted, so the triangles
+  // around one edge mostly fall in one chunk), gathered in chunk order: the same pieces in the
+  // same order, built the same way, for any number of threads.
+  constexpr std::size_t kPairsPerChunk = 2048;
+  const std::size_t chunk_count = (pairs.size() + kPairsPerChunk - 1) / kPairsPerChunk;
+  std::vector<std::vector<std::pair<GroupPair, Piece>>> chunk_pieces(chunk_count);
+  parallel_chunks(chunk_count, 1, [&](const auto& range) {
+    for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
+      TriangleChords chords(meshes);
+      std::size_t polls = 0;
+      auto& out = chunk_pieces[chunk];
+      const std::size_t end = std::min(pairs.size(), (chunk + 1) * kPairsPerChunk);
+      for (std::size_t k = chunk * kPairsPerChunk; k < end; ++k) {
+        stop.check_every(polls, 256);
+        FaceRef f = faces[pairs[k].first], g = faces[pairs[k].second];
+        // One key per pair of groups, whichever face came first.
+        if (std::pair(g.mesh, topo[g.mesh].coplanar_group[g.face]) < std::pair(f.mesh, topo[f.mesh].coplanar_group[f.face]))
+          std::swap(f, g);
+        const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);
+        const GroupPair key{f.mesh, topo[f.mesh].coplanar_group[f.face], g.mesh, topo[g.mesh].coplanar_group[g.face]};
+        const double meeting_degrees = angle_between(pf.orthogonal_vector(), pg.orthogonal_vector());
+        if (meshes[f.mesh].faces[f.face].size() == 3 && meshes[g.mesh].faces[g.face].size() == 3) {
+          // Two triangles: the open chords each cuts from the line of the two planes, overlapped.
+          auto chord = [&](const FaceRef& t, const FaceRef& other) {
+            const auto& pv = topo[other.mesh].plane_vertices[other.face];
+            const Mesh& om = meshes[other.mesh];
+            const std::uint64_t plane_id = (std::uint64_t(other.mesh) << 32) | topo[other.mesh].coplanar_group[other.face];
+            return chords.chord(t.mesh, t.face, om.vertices[pv[0]], om.vertices[pv[1]], om.vertices[pv[2]], plane_id);
+          };
+          const auto in_f = chord(f, g), in_g = chord(g, f);
+          const EK::Point_3& lo = CGAL::compare_xyz(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
+          const EK::Point_3& hi = CGAL::compare_xyz(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
+          if (CGAL::compare_xyz(lo, hi) == CGAL::SMALLER) out.push_back({key, {lo, hi, f.face, g.face, meeting_degrees}});
+          continue;
+        }
+        const auto meet = CGAL::intersection(pf, pg);
+        if (!meet) continue;
+        const EK::Line_3* line = boost::get<EK::Line_3>(&*meet);  // CGAL 5: boost::variant
+        if (!line) continue;
+        const EK::Point_3 p = line->point();
+        const EK::Vector_3 d = line->to_vector();
+        const auto in_f = interior_intervals(meshes[f.mesh], meshes[f.mesh].faces[f.face], pf.orthogonal_vector(), p, d);
+        const auto in_g = interior_intervals(meshes[g.mesh], meshes[g.mesh].faces[g.face], pg.orthogonal_vector(), p, d);
+        for (const Interval& x : in_f)
+          for (const Interval& y : in_g) {
+            const FT lo = CGAL::max(x.first, y.first), hi = CGAL::min(x.second, y.second);
+            if (!(lo < hi)) continue;
+            EK::Point_3 a = p + lo * d, b = p + hi * d;
+            if (CGAL::compare_xyz(b, a) == CGAL::SMALLER) std::swap(a, b);
+            out.push_back({key, {a, b, f.face, g.face, meeting_degrees}});
+          }
       }
-  }
+    }
+  });
+  std::map<GroupPair, std::vector<Piece>> pieces;
+  for (auto& chunk : chunk_pieces)
+    for (auto& [key, piece] : chunk) pieces[key].push_back(std::move(piece));
 
   // Join the pieces of each group pair where they meet or overlap (points along one line are
   // ordered lexicographically).

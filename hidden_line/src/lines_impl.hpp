@@ -498,53 +498,94 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   };
 
   // Visible spans first, then hidden ones; each loses what earlier, collinear spans already draw.
-  // Pieces of one line never overlap.
-  std::vector<DrawnSegment<K>> out;
-  std::vector<Span> drawn;  // parallel to out
-  detail::LooseGrid grid(domain, spans.size());
-  std::vector<std::int8_t> collinear(lines.lines.size(), -1);  // with the current span's line
-  std::vector<std::uint32_t> asked;
-  std::size_t polls = 0;
-  for (const Span& span : spans) {
-    stop.check_every(polls, 1024);
-    const detail::ImageLine<K>& image = images[span.line];
-    const auto a = image.at(span.t0), b = image.at(span.t1);
-    const CGAL::Bbox_2 box = G::bbox(a) + G::bbox(b);
-    std::vector<std::pair<FT, FT>> covered;
-    for (std::uint32_t l : asked) collinear[l] = -1;
-    asked.clear();
-    grid.query(box, [&](std::uint32_t i) {
-      const Span& d = drawn[i];
-      if (d.line == span.line) return;
-      if (collinear[d.line] < 0) {
-        collinear[d.line] = collinear_lines(span.line, d.line);
-        asked.push_back(d.line);
-      }
-      if (!collinear[d.line]) return;
-      FT lo = image.param(out[i].a), hi = image.param(out[i].b);
-      if (hi < lo) std::swap(lo, hi);
-      lo = std::max(lo, span.t0);
-      hi = std::min(hi, span.t1);
-      if (lo < hi) covered.emplace_back(lo, hi);
-    });
-    std::sort(covered.begin(), covered.end());
-    const FeatureLine<K>& line = lines.lines[span.line];
-    FT from = span.t0;
-    bool at_start = true;  // from is span.t0, whose point is a
-    auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
-      const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
-                              line.meeting_degrees};
-      grid.insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
-      out.push_back(d);
-      drawn.push_back({span.line, t0, t1, span.visible});
-    };
-    for (const auto& [lo, hi] : covered) {
-      if (from < lo) emit(from, lo, false);
-      from = std::max(from, hi);
-      at_start = false;
+  // Pieces of one line never overlap. Only spans of collinear lines whose boxes overlap interact,
+  // and lines joined by such pairs all lie on one image line (collinearity is exact, so
+  // transitive): each such group is solved on its own, in parallel, and the segments gathered in
+  // span order are those of one pass over all spans, for any number of threads.
+  const std::size_t n = lines.lines.size();
+  detail::LooseGrid line_grid(domain, n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (!lines.lines[i].pieces.empty()) line_grid.insert(i, images[i].bbox());
+  constexpr std::size_t kLinesPerChunk = 1024;
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> chunk_pairs((n + kLinesPerChunk - 1) / kLinesPerChunk);
+  parallel_chunks(chunk_pairs.size(), 1, [&](const auto& range) {
+    for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
+      stop.check();
+      for (std::uint32_t i = std::uint32_t(chunk * kLinesPerChunk); i < std::min(n, (chunk + 1) * kLinesPerChunk); ++i)
+        if (!lines.lines[i].pieces.empty())
+          line_grid.query(images[i].bbox(), [&](std::uint32_t j) {
+            if (j > i && collinear_lines(i, j)) chunk_pairs[chunk].emplace_back(i, j);
+          });
     }
-    if (from < span.t1) emit(from, span.t1, true);
+  });
+  UnionFind groups(n);
+  for (const auto& pairs : chunk_pairs)
+    for (const auto& [i, j] : pairs) groups.join(i, j);
+  std::vector<std::int32_t> group_of_root(n, -1);
+  std::vector<std::vector<std::uint32_t>> group_spans;  // span indices, in span order
+  for (std::uint32_t s = 0; s < spans.size(); ++s) {
+    std::int32_t& g = group_of_root[groups.find(spans[s].line)];
+    if (g < 0) {
+      g = std::int32_t(group_spans.size());
+      group_spans.emplace_back();
+    }
+    group_spans[std::size_t(g)].push_back(s);
   }
+
+  // One group's spans in order: what each adds to the drawing, with its span index.
+  auto solve_group = [&](const std::vector<std::uint32_t>& members,
+                         std::vector<std::pair<std::uint32_t, DrawnSegment<K>>>& emitted) {
+    std::vector<DrawnSegment<K>> out;
+    std::vector<std::uint32_t> drawn_line;  // parallel to out
+    CGAL::Bbox_2 group_domain;
+    for (std::uint32_t s : members) group_domain += images[spans[s].line].bbox();
+    detail::LooseGrid grid(group_domain, members.size());
+    for (std::uint32_t s : members) {
+      const Span& span = spans[s];
+      const detail::ImageLine<K>& image = images[span.line];
+      const auto a = image.at(span.t0), b = image.at(span.t1);
+      std::vector<std::pair<FT, FT>> covered;
+      grid.query(G::bbox(a) + G::bbox(b), [&](std::uint32_t i) {
+        if (drawn_line[i] == span.line) return;
+        FT lo = image.param(out[i].a), hi = image.param(out[i].b);
+        if (hi < lo) std::swap(lo, hi);
+        lo = std::max(lo, span.t0);
+        hi = std::min(hi, span.t1);
+        if (lo < hi) covered.emplace_back(lo, hi);
+      });
+      std::sort(covered.begin(), covered.end());
+      const FeatureLine<K>& line = lines.lines[span.line];
+      FT from = span.t0;
+      bool at_start = true;  // from is span.t0, whose point is a
+      auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
+        const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
+                                line.meeting_degrees};
+        grid.insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
+        out.push_back(d);
+        drawn_line.push_back(span.line);
+        emitted.emplace_back(s, d);
+      };
+      for (const auto& [lo, hi] : covered) {
+        if (from < lo) emit(from, lo, false);
+        from = std::max(from, hi);
+        at_start = false;
+      }
+      if (from < span.t1) emit(from, span.t1, true);
+    }
+  };
+  std::vector<std::vector<std::pair<std::uint32_t, DrawnSegment<K>>>> emitted(group_spans.size());
+  parallel_chunks(group_spans.size(), 256, [&](const auto& range) {
+    stop.check();
+    for (std::size_t g = range.begin(); g != range.end(); ++g) solve_group(group_spans[g], emitted[g]);
+  });
+  // Gathered in span order; a span's segments come from one group, in the order it emitted them.
+  std::vector<std::size_t> first(spans.size() + 1, 0);
+  for (const auto& list : emitted)
+    for (const auto& e : list) ++first[e.first + 1];
+  for (std::size_t s = 0; s < spans.size(); ++s) first[s + 1] += first[s];
+  std::vector<DrawnSegment<K>> out(first.back());
+  for (auto& list : emitted)
+    for (auto& [s, d] : list) out[first[s]++] = std::move(d);
   return out;
 }
 

@@ -122,22 +122,39 @@ class AreaSort {
                 G::compare_xy(a.points[i], a.points[(i + 1) % 3]) == -G::compare_xy(b.points[j], b.points[(j + 1) % 3]))
               return true;
     auto separates = [](const clip::Contour<K>& own, const clip::Contour<K>& other) {
-      const std::size_t n = own.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        const P &p = own.points[i], &q = own.points[(i + 1) % n];
-        auto all_on = [&](const clip::Contour<K>& c, int side) {
-          for (std::size_t k = 0; k < c.size(); ++k) {
-            if constexpr (G::exact_constructions)
-              if (clip::corner_on_line(c, k, own.lines[i])) continue;  // on the line: orientation 0
-            if (G::orientation(p, q, c.points[k]) == -side) return false;
-          }
-          return true;
-        };
-        if (all_on(own, 1) && all_on(other, -1)) return true;
-      }
+      for (std::size_t i = 0; i < own.size(); ++i)
+        if (on_closed_side(own, i, own, 1) && on_closed_side(own, i, other, -1)) return true;
       return false;
     };
     return separates(a, b) || separates(b, a);
+  }
+
+  // Whether every corner of c lies on the closed left (side 1) or right (side -1) of the line
+  // through edge i of `own`. Exact.
+  static bool on_closed_side(const clip::Contour<K>& own, std::size_t i, const clip::Contour<K>& c, int side) {
+    const P &p = own.points[i], &q = own.points[(i + 1) % own.size()];
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      if constexpr (G::exact_constructions)
+        if (clip::corner_on_line(c, k, own.lines[i])) continue;  // on the line: orientation 0
+      if (G::orientation(p, q, c.points[k]) == -side) return false;
+    }
+    return true;
+  }
+
+  // Whether a front piece is a strictly convex polygon without holes of a few corners: then a
+  // piece lies in its closure when every corner of the piece does (covered, below).
+  static bool small_convex(const Polygon& front) {
+    constexpr std::size_t kMaxCorners = 16;
+    const auto& c = front.outer;
+    if (!front.holes.empty() || c.size() > kMaxCorners) return false;
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (G::orientation(c.points[i], c.points[(i + 1) % c.size()], c.points[(i + 2) % c.size()]) <= 0) return false;
+    return true;
+  }
+  static bool covered(const clip::Contour<K>& convex_front, const clip::Contour<K>& piece) {
+    for (std::size_t i = 0; i < convex_front.size(); ++i)
+      if (!on_closed_side(convex_front, i, piece, 1)) return false;
+    return true;
   }
 
   // Nearer first; ties by source index, so the order is deterministic.
@@ -301,6 +318,20 @@ class AreaSort {
             cut.push_back(other);
         });
         std::sort(cut.begin(), cut.end());
+        // When no output asks for hidden pieces, a piece that a convex front covers and lies
+        // behind is dropped without clipping: its clip would give the piece itself, hidden.
+        if (!options_.keep_hidden && !cut.empty() && small_convex(front.polygon)) {
+          std::erase_if(cut, [&](std::uint32_t other) {
+            const Item& item = pieces[other];
+            if (!covered(front.polygon.outer, item.polygon.outer) ||
+                relation(item.polygon, item.source, front.source) != Relation::behind)
+              return false;
+            live[other] = 0;
+            auto& kept = slots[slot_of[other]];
+            kept.erase(std::find(kept.begin(), kept.end(), other));
+            return true;
+          });
+        }
         std::vector<Item> ahead;
         if (!cut.empty()) {
           ++map_.stats.clips;

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <optional>
 #include <unordered_map>
 
 namespace hlr::hidden_line {
@@ -504,8 +505,31 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // span order are those of one pass over all spans, for any number of threads.
   const std::size_t n = lines.lines.size();
   detail::LooseGrid line_grid(domain, n);
-  for (std::uint32_t i = 0; i < n; ++i)
-    if (!lines.lines[i].pieces.empty()) line_grid.insert(i, images[i].bbox());
+  // A candidate filter in double (it decides nothing): each line's unit direction from the
+  // centres of its ends' interval boxes, and a bound on that direction's error. Two lines whose
+  // directions' cross product exceeds both bounds are certainly not parallel, so not collinear.
+  struct Direction {
+    double x = 0, y = 0, error = HUGE_VAL;
+  };
+  std::vector<Direction> directions(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (lines.lines[i].pieces.empty()) continue;
+    line_grid.insert(i, images[i].bbox());
+    const CGAL::Bbox_2 a = G::bbox(images[i].a), b = G::bbox(images[i].b);
+    const double dx = (b.xmin() + b.xmax() - a.xmin() - a.xmax()) / 2, dy = (b.ymin() + b.ymax() - a.ymin() - a.ymax()) / 2;
+    const double length = std::hypot(dx, dy);
+    // The boxes' widths, and the rounding of the sums above (a few ulps of the coordinates).
+    const double magnitude = std::abs(a.xmin()) + std::abs(a.xmax()) + std::abs(b.xmin()) + std::abs(b.xmax()) +
+                             std::abs(a.ymin()) + std::abs(a.ymax()) + std::abs(b.ymin()) + std::abs(b.ymax());
+    const double spread = (a.xmax() - a.xmin()) + (a.ymax() - a.ymin()) + (b.xmax() - b.xmin()) + (b.ymax() - b.ymin()) +
+                          1e-15 * magnitude;
+    if (length > 0 && std::isfinite(length) && spread < 1e-3 * length)
+      directions[i] = {dx / length, dy / length, 4 * spread / length + 1e-12};
+  }
+  auto maybe_collinear = [&](std::uint32_t i, std::uint32_t j) {
+    const Direction &u = directions[i], &v = directions[j];
+    return !(std::abs(u.x * v.y - u.y * v.x) > u.error + v.error) && collinear_lines(i, j);
+  };
   constexpr std::size_t kLinesPerChunk = 1024;
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> chunk_pairs((n + kLinesPerChunk - 1) / kLinesPerChunk);
   parallel_chunks(chunk_pairs.size(), 1, [&](const auto& range) {
@@ -514,7 +538,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       for (std::uint32_t i = std::uint32_t(chunk * kLinesPerChunk); i < std::min(n, (chunk + 1) * kLinesPerChunk); ++i)
         if (!lines.lines[i].pieces.empty())
           line_grid.query(images[i].bbox(), [&](std::uint32_t j) {
-            if (j > i && collinear_lines(i, j)) chunk_pairs[chunk].emplace_back(i, j);
+            if (j > i && maybe_collinear(i, j)) chunk_pairs[chunk].emplace_back(i, j);
           });
     }
   });
@@ -532,20 +556,31 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     group_spans[std::size_t(g)].push_back(s);
   }
 
-  // One group's spans in order: what each adds to the drawing, with its span index.
+  // One group's spans in order: what each adds to the drawing, with its span index. A span of a
+  // line alone in its group is drawn whole.
   auto solve_group = [&](const std::vector<std::uint32_t>& members,
                          std::vector<std::pair<std::uint32_t, DrawnSegment<K>>>& emitted) {
+    const bool alone = std::all_of(members.begin(), members.end(),
+                                   [&](std::uint32_t s) { return spans[s].line == spans[members.front()].line; });
     std::vector<DrawnSegment<K>> out;
     std::vector<std::uint32_t> drawn_line;  // parallel to out
-    CGAL::Bbox_2 group_domain;
-    for (std::uint32_t s : members) group_domain += images[spans[s].line].bbox();
-    detail::LooseGrid grid(group_domain, members.size());
+    std::optional<detail::LooseGrid> grid;
+    if (!alone) {
+      CGAL::Bbox_2 group_domain;
+      for (std::uint32_t s : members) group_domain += images[spans[s].line].bbox();
+      grid.emplace(group_domain, members.size());
+    }
     for (std::uint32_t s : members) {
       const Span& span = spans[s];
       const detail::ImageLine<K>& image = images[span.line];
+      const FeatureLine<K>& line = lines.lines[span.line];
       const auto a = image.at(span.t0), b = image.at(span.t1);
+      if (alone) {
+        emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees});
+        continue;
+      }
       std::vector<std::pair<FT, FT>> covered;
-      grid.query(G::bbox(a) + G::bbox(b), [&](std::uint32_t i) {
+      grid->query(G::bbox(a) + G::bbox(b), [&](std::uint32_t i) {
         if (drawn_line[i] == span.line) return;
         FT lo = image.param(out[i].a), hi = image.param(out[i].b);
         if (hi < lo) std::swap(lo, hi);
@@ -554,13 +589,12 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
         if (lo < hi) covered.emplace_back(lo, hi);
       });
       std::sort(covered.begin(), covered.end());
-      const FeatureLine<K>& line = lines.lines[span.line];
       FT from = span.t0;
       bool at_start = true;  // from is span.t0, whose point is a
       auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
         const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
                                 line.meeting_degrees};
-        grid.insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
+        grid->insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
         out.push_back(d);
         drawn_line.push_back(span.line);
         emitted.emplace_back(s, d);

@@ -4,8 +4,9 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 
-from conftest import CLI_PARTS, HLR, SCENES, run_hlr
+from conftest import CLI_PARTS, CLIP, HLR, SCENES, run_hlr
 
 MESHES = ["cube.off", "l_bracket.off", "penetrating_boxes.off", "plate_with_hole.off"]
 
@@ -46,14 +47,28 @@ def dask_batch(manifest, *extra):
                            "--workers", "2", *extra], capture_output=True, text=True, timeout=240)
 
 
+def without_seconds(document):
+    """A JSON document without every "seconds" (hlr-check/1, hlr-clip/1's "stats")."""
+    if isinstance(document, dict):
+        return {key: without_seconds(value) for key, value in document.items() if key != "seconds"}
+    if isinstance(document, list):
+        return [without_seconds(item) for item in document]
+    return document
+
+
 def comparable(path):
     data = path.read_bytes()
     if path.suffix != ".json":
         return data
-    document = json.loads(data)
-    document.pop("stats", None)
-    document.get("input", {}).pop("files", None)  # spelled as the runner gave the path
+    document = without_seconds(json.loads(data))
+    document.pop("stats", None)  # hlr-lines/1's timings and counts of work
+    if isinstance(document.get("input"), dict):
+        document["input"].pop("files", None)  # spelled as the runner gave the path
     return document
+
+
+def out_files(folder):
+    return sorted(p.relative_to(folder) for p in (folder / "out").rglob("*") if p.is_file())
 
 
 def results(stdout):
@@ -111,3 +126,94 @@ def test_a_malformed_manifest_is_one_line(tmp_path):
     assert on_dask.returncode == 1
     assert on_dask.stderr.strip() == f'hlrdraw.batch: {manifest}: job 0: "outputs" is missing'
     assert on_dask.stdout == ""
+
+
+def prepare_clip_and_check(folder):
+    """A manifest of a clip job (its polygon files in the manifest's folder), a check job and a draw
+    job."""
+    jobs = [{"command": "clip", "inputs": ["polygons/subject.json", "polygons/clip.json"], "options": ["--exact"],
+             "outputs": ["out/clip.json"]},
+            {"command": "check", "meshes": ["meshes/l_bracket.off"], "view": "iso", "options": ["--raster", "256"],
+             "outputs": ["out/check/diff.png", "out/check/report.json"]},
+            {"command": "draw", "meshes": ["meshes/cube.off"], "view": "top", "outputs": ["out/top.svg"]}]
+    manifest = prepare(folder, jobs)
+    os.makedirs(folder / "polygons")
+    for name in ("subject.json", "clip.json"):
+        shutil.copy(os.path.join(CLIP, name), folder / "polygons" / name)
+    return manifest
+
+
+def test_dask_runs_clip_and_check_jobs_as_hlr_batch_and_the_cli_do(tmp_path):
+    local = prepare_clip_and_check(tmp_path / "local")
+    dask = prepare_clip_and_check(tmp_path / "dask")
+    run = run_hlr("batch", local, "--jobs", "2")
+    assert run.code == 0, run.err
+    on_dask = dask_batch(dask)
+    assert on_dask.returncode == 0, on_dask.stderr
+    assert results(on_dask.stdout) == results(run.out) == [
+        "job 0 ok: out/clip.json", "job 1 ok: out/check/diff.png out/check/report.json", "job 2 ok: out/top.svg"]
+    files = out_files(tmp_path / "local")
+    assert files == out_files(tmp_path / "dask") and len(files) == 4
+    for name in files:
+        assert comparable(tmp_path / "dask" / name) == comparable(tmp_path / "local" / name), name
+    # The clip job's file is the one `hlr clip` writes for the same command line (but its time).
+    direct = tmp_path / "direct_clip.json"
+    assert run_hlr("clip", "polygons/subject.json", "polygons/clip.json", "--exact", "-o", direct,
+                   cwd=tmp_path / "local").code == 0
+    assert without_seconds(json.loads(direct.read_text())) == \
+        without_seconds(json.loads((tmp_path / "dask" / "out" / "clip.json").read_text()))
+
+
+def test_dask_reports_a_clip_job_whose_input_is_missing(tmp_path):
+    jobs = [{"command": "clip", "inputs": ["polygons/none.json", "polygons/clip.json"], "outputs": ["out/c.json"]}]
+    manifest = prepare(tmp_path, jobs)
+    on_dask = dask_batch(manifest)
+    assert on_dask.returncode == 1
+    assert on_dask.stdout == "job 0 failed: polygons/none.json: cannot open (No such file or directory)\n"
+    assert not (tmp_path / "out").exists()
+
+
+def bumpy_grid(path, n):
+    """A bumpy grid of n x n vertices, 2 (n - 1)^2 triangles, none coplanar: about 10 s of work for
+    hlr at n = 300 on one core (tests/cli/limits_test.cpp has the same)."""
+    state = 12345
+    lines = ["OFF", f"{n * n} {2 * (n - 1) * (n - 1)} 0"]
+    for y in range(n):
+        for x in range(n):
+            state = (state * 6364136223846793005 + 1442695040888963407) % 2**64
+            lines.append(f"{x} {y} {(state >> 40) / float(1 << 24)!r}")
+    for y in range(n - 1):
+        for x in range(n - 1):
+            v = y * n + x
+            lines.append(f"3 {v} {v + 1} {v + n + 1}")
+            lines.append(f"3 {v} {v + n + 1} {v + n}")
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_a_task_stops_its_job_at_the_batchs_deadline(tmp_path):
+    from hlrdraw import batch
+    grid = bumpy_grid(tmp_path / "grid.off", 300).read_bytes()
+    job = {"job": 3, "arguments": ["draw", "grid.off", "--threads", "1", "-o", "a.svg", "-o", "a.json"],
+           "inputs": [1], "outputs": [5, 7]}
+    stopped = batch.run_job(job, {"grid.off": grid}, HLR, deadline=time.time() + 1, timeout=1)
+    assert stopped["outcome"] == "stopped", stopped
+    assert stopped["problem"] == "the batch's --timeout 1 expired; no file written"
+    assert stopped["outputs"] == {}
+    late = batch.run_job(job, {"grid.off": grid}, HLR, deadline=time.time() - 1, timeout=2.5)
+    assert (late["outcome"], late["problem"]) == ("not run", "the batch's --timeout 2.5 expired")
+
+
+def test_dask_batch_timeout_exits_124_with_one_summary_line(tmp_path):
+    # The cluster takes longer than a millisecond to start: no job starts before the deadline.
+    jobs = [{"command": "draw", "meshes": ["meshes/cube.off"], "outputs": ["out/cube.svg"]},
+            {"command": "clip", "inputs": ["meshes/cube.off", "meshes/cube.off"], "outputs": ["out/c.json"]}]
+    manifest = prepare(tmp_path, jobs)
+    on_dask = dask_batch(manifest, "--timeout", "0.001")
+    assert on_dask.returncode == 124, on_dask.stderr
+    assert results(on_dask.stdout) == ["job 0 not run: the batch's --timeout 0.001 expired",
+                                       "job 1 not run: the batch's --timeout 0.001 expired"]
+    summary = [line for line in on_dask.stderr.splitlines() if line.startswith("hlrdraw.batch: ")]
+    assert len(summary) == 1 and summary[0].startswith("hlrdraw.batch: --timeout 0.001: the batch stopped after ")
+    assert summary[0].endswith(" s; 0 of 2 jobs ok, 0 failed, 0 stopped, 2 not run"), summary
+    assert not (tmp_path / "out").exists()

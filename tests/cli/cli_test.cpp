@@ -1163,6 +1163,14 @@ class CliBatch : public CliDraw {
     doc.erase("stats");
     return doc;
   }
+
+  // A JSON document without its timings, every "seconds" (hlr-check/1, hlr-clip/1's "stats").
+  static json without_seconds(json doc) {
+    if (doc.is_object()) doc.erase("seconds");
+    if (doc.is_structured())  // iterating a number or a string would visit the value itself
+      for (auto& item : doc) item = without_seconds(item);
+    return doc;
+  }
 };
 
 TEST_F(CliBatch, RunsEveryJobAsTheCliWouldAndReportsTheFailedOne) {
@@ -1196,6 +1204,67 @@ TEST_F(CliBatch, RunsEveryJobAsTheCliWouldAndReportsTheFailedOne) {
   EXPECT_TRUE(surfaces.dump().find("_exact") != std::string::npos) << "the job's options are passed on";
 }
 
+TEST_F(CliBatch, RunsClipAndCheckJobsAsTheCliWould) {
+  // A clip job reads "inputs" (SUBJECT.json and CLIP.json); a check job's outputs are its --diff
+  // .png and --json .json. Absolute input paths, so that the same command lines run from here.
+  const std::string subject = (kFixtures / "subject.json").string(), clips = (kFixtures / "clip.json").string();
+  const std::string cube = (kScenes / "cube.off").string();
+  const fs::path m = manifest(json::array({
+      {{"command", "clip"}, {"inputs", {subject, clips}}, {"options", {"--exact"}}, {"outputs", {"../out/clip.json"}}},
+      {{"command", "check"}, {"meshes", {cube}}, {"view", "iso"}, {"options", {"--raster", "256"}},
+       {"outputs", {"../out/check/diff.png", "../out/check/report.json"}}},
+      {{"command", "draw"}, {"meshes", {cube}}, {"view", "top"}, {"outputs", {"../out/top.svg"}}},
+      {{"command", "clip"}, {"inputs", {subject, "polygons/missing.json"}}, {"outputs", {"../out/missing.json"}}},
+  }));
+  Outcome run = hlr({"batch", m.string(), "--jobs", "2", "--threads", "1"});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(sorted_lines(run.out), (std::vector<std::string>{
+                                       "job 0 ok: ../out/clip.json",
+                                       "job 1 ok: ../out/check/diff.png ../out/check/report.json",
+                                       "job 2 ok: ../out/top.svg",
+                                       "job 3 failed: polygons/missing.json: cannot open (No such file or directory)",
+                                   }));
+  EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"check", "clip.json", "top.svg"}));
+
+  ASSERT_EQ(hlr({"clip", subject, clips, "--exact", "-o", out("direct_clip.json").string()}).exit_code, 0);
+  ASSERT_EQ(hlr({"check", cube, "--view", "iso", "--raster", "256", "--diff", out("direct.png").string(), "--json",
+                 out("direct.json").string()})
+                .exit_code,
+            0);
+  ASSERT_EQ(hlr({"draw", cube, "--view", "top", "-o", out("direct_top.svg").string()}).exit_code, 0);
+  EXPECT_EQ(without_seconds(json::parse(slurp(out("clip.json")))), without_seconds(json::parse(slurp(out("direct_clip.json")))));
+  EXPECT_EQ(slurp(dir_ / "out" / "check" / "diff.png"), slurp(out("direct.png")));
+  EXPECT_EQ(without_seconds(json::parse(slurp(dir_ / "out" / "check" / "report.json"))),
+            without_seconds(json::parse(slurp(out("direct.json")))));
+  EXPECT_EQ(slurp(out("top.svg")), slurp(out("direct_top.svg")));
+
+  // The command lines: clip has no --threads, so the batch's is not passed on to it.
+  Outcome list = hlr({"batch", m.string(), "--list", "--threads", "1"});
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  std::istringstream lines(list.out);
+  std::string clip_line, check_line;
+  std::getline(lines, clip_line);
+  std::getline(lines, check_line);
+  EXPECT_EQ(json::parse(clip_line),
+            json({{"job", 0}, {"arguments", {"clip", subject, clips, "--exact", "-o", "../out/clip.json"}},
+                  {"inputs", {1, 2}}, {"outputs", {5}}}));
+  EXPECT_EQ(json::parse(check_line).at("arguments"),
+            json({"check", cube, "--view", "iso", "--raster", "256", "--diff", "../out/check/diff.png", "--json",
+                  "../out/check/report.json", "--threads", "1"}));
+}
+
+TEST_F(CliBatch, JobTimeoutIsEveryJobsOwnTimeoutUnlessItHasOne) {
+  const fs::path m = manifest(json::array({
+      {{"command", "draw"}, {"meshes", {"meshes/cube.off"}}, {"outputs", {"x.svg"}}},
+      {{"command", "clip"}, {"inputs", {"s.json", "c.json"}}, {"options", {"--timeout", "9"}}, {"outputs", {"y.json"}}},
+  }));
+  Outcome run = hlr({"batch", m.string(), "--list", "--job-timeout", "2.5"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out,
+            R"({"arguments":["draw","meshes/cube.off","-o","x.svg","--timeout","2.5"],"inputs":[1],"job":0,"outputs":[3]})" "\n"
+            R"({"arguments":["clip","s.json","c.json","--timeout","9","-o","y.json"],"inputs":[1,2],"job":1,"outputs":[6]})" "\n");
+}
+
 TEST_F(CliBatch, ListsTheJobsCommandLines) {
   const fs::path m = manifest(json::array({
       {{"command", "draw"}, {"meshes", {"meshes/cube.off", "b.off"}}, {"view", "top"}, {"options", {"--crease", "40"}},
@@ -1206,8 +1275,8 @@ TEST_F(CliBatch, ListsTheJobsCommandLines) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(run.out,
             R"({"arguments":["draw","meshes/cube.off","b.off","--view","top","--crease","40","-o","x.svg","--threads","3"],)"
-            R"("job":0,"meshes":[1,2],"outputs":[8]})" "\n"
-            R"({"arguments":["sheet","meshes/cube.off","--threads","1","-o","y.pdf"],"job":1,"meshes":[1],"outputs":[5]})" "\n");
+            R"("inputs":[1,2],"job":0,"outputs":[8]})" "\n"
+            R"({"arguments":["sheet","meshes/cube.off","--threads","1","-o","y.pdf"],"inputs":[1],"job":1,"outputs":[5]})" "\n");
   EXPECT_TRUE(entries(dir_ / "out").empty());
 }
 
@@ -1221,8 +1290,28 @@ TEST_F(CliBatch, MalformedManifestsAreOneLineAndRunNothing) {
       {R"({"format": "hlr-lines/1", "jobs": []})", R"(format is "hlr-lines/1", expected "hlr-batch/1")"},
       {R"({"format": "hlr-batch/1"})", R"("jobs" is missing)"},
       {R"({"format": "hlr-batch/1", "jobs": [)" + job + R"(, 3]})", "job 1 is a number, expected an object"},
-      {R"({"format": "hlr-batch/1", "jobs": [{"command": "clip", "meshes": ["a"], "outputs": ["b"]}]})",
-       R"(job 0: unknown command "clip" (a job is draw, sheet or surfaces))"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "shadows", "meshes": ["a"], "outputs": ["b"]}]})",
+       R"(job 0: unknown command "shadows" (a job is draw, sheet, surfaces, check or clip))"},
+      // clip jobs: two "inputs" (polygon files), one output, no view
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "clip", "meshes": ["a", "b"], "outputs": ["c"]}]})",
+       R"(job 0: a clip job reads "inputs" (SUBJECT.json and CLIP.json), not "meshes")"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "clip", "inputs": ["a"], "outputs": ["c"]}]})",
+       R"(job 0: "inputs" has 1 path, expected 2 (SUBJECT.json and CLIP.json))"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "clip", "inputs": ["a", "b"], "outputs": ["c", "d"]}]})",
+       R"(job 0: "outputs" has 2 paths, expected 1)"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "clip", "inputs": ["a", "b"], "view": "iso", "outputs": ["c"]}]})",
+       R"(job 0: unknown key "view" (a clip job has command, inputs, options and outputs))"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "clip", "inputs": ["a", "b"], "options": ["--output=d"], "outputs": ["c"]}]})",
+       R"(job 0: "options" name an output (--output=d))"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "draw", "inputs": ["a"], "outputs": ["b"]}]})",
+       R"(job 0: a draw job reads "meshes", not "inputs")"},
+      // check jobs: outputs by extension, one of each
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "check", "meshes": ["a"], "outputs": ["b.svg"]}]})",
+       R"(job 0: output "b.svg" is not .png (--diff) or .json (--json), what a check job writes)"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "check", "meshes": ["a"], "outputs": ["b.json", "c.JSON"]}]})",
+       R"(job 0: outputs "b.json" and "c.JSON" are both .json (--json): a check job writes one)"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "check", "meshes": ["a"], "options": ["--diff", "d.png"], "outputs": ["b.json"]}]})",
+       R"(job 0: "options" name an output (--diff))"},
       {R"({"format": "hlr-batch/1", "jobs": [{"command": "draw", "meshes": [], "outputs": ["b"]}]})",
        R"(job 0: "meshes" is empty)"},
       {R"({"format": "hlr-batch/1", "jobs": [{"command": "draw", "meshes": ["a"], "output": ["b"]}]})",

@@ -92,6 +92,40 @@ TEST_F(CliLimits, TimeoutStopsTheRunWithOneLineAndNoFile) {
   expect_nothing_written();
 }
 
+TEST_F(CliLimits, BatchTimeoutStopsTheRunningJobsAndRunsNoMore) {
+  // One job at a time: a tetrahedron, done at once, then two long ones. At the batch's --timeout
+  // the first long one is stopped (no file, no temporary file) and the second is not run. Nothing
+  // is asserted on speed but that a tetrahedron takes less than the timeout and the grid more.
+  bumpy_grid(300);
+  spit(dir_ / "tetra.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  spit(dir_ / "batch.json", R"({"format": "hlr-batch/1", "jobs": [
+      {"command": "draw", "meshes": ["tetra.off"], "outputs": ["out/tetra.svg"]},
+      {"command": "draw", "meshes": ["grid.off"], "options": ["--threads", "1"],
+       "outputs": ["out/a.svg", "out/a.json", "out/a.dxf"]},
+      {"command": "surfaces", "meshes": ["grid.off"], "outputs": ["out/b.json"]}]})");
+  const Outcome run = hlr({"batch", (dir_ / "batch.json").string(), "--jobs", "1", "--timeout", "4"});
+  EXPECT_EQ(run.exit_code, 124) << run.err;
+  EXPECT_EQ(run.out,
+            "job 0 ok: out/tetra.svg\n"
+            "job 1 stopped: the batch's --timeout 4 expired; no file written\n"
+            "job 2 not run: the batch's --timeout 4 expired\n");
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+  EXPECT_EQ(run.err.rfind("hlr batch: --timeout 4: the batch stopped after ", 0), 0u) << run.err;
+  EXPECT_NE(run.err.find(" s; 1 of 3 jobs ok, 0 failed, 1 stopped, 1 not run\n"), std::string::npos) << run.err;
+  EXPECT_EQ(entries(dir_ / "out"), std::vector<std::string>{"tetra.svg"});
+}
+
+TEST_F(CliLimits, BatchJobTimeoutFailsTheJobAsItsOwnTimeoutWould) {
+  bumpy_grid(300);
+  spit(dir_ / "batch.json", R"({"format": "hlr-batch/1", "jobs": [
+      {"command": "draw", "meshes": ["grid.off"], "outputs": ["out/a.svg", "out/a.json"]}]})");
+  const Outcome run = hlr({"batch", (dir_ / "batch.json").string(), "--job-timeout", "0.5"});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(run.out.rfind("job 0 failed: --timeout 0.5: the run stopped after 0.5 s while ", 0), 0u) << run.out;
+  EXPECT_NE(run.err.find("hlr batch: 0 of 1 jobs ok, 1 failed"), std::string::npos) << run.err;
+  expect_nothing_written();
+}
+
 TEST_F(CliLimits, SigintStopsTheWorkAndRemovesEveryTemporaryFile) {
   const fs::path grid = bumpy_grid(300);
   for (const int signo : {SIGINT, SIGTERM}) {

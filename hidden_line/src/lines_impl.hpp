@@ -582,6 +582,10 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       std::vector<std::pair<FT, FT>> covered;
       grid->query(G::bbox(a) + G::bbox(b), [&](std::uint32_t i) {
         if (drawn_line[i] == span.line) return;
+        // On the inexact kernels collinearity need not be transitive (the double kernel decides it
+        // in floating point): each pair is asked again.
+        if constexpr (!G::exact_constructions)
+          if (!collinear_lines(span.line, drawn_line[i])) return;
         FT lo = image.param(out[i].a), hi = image.param(out[i].b);
         if (hi < lo) std::swap(lo, hi);
         lo = std::max(lo, span.t0);

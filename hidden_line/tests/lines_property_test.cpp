@@ -58,10 +58,13 @@ LineReport run_and_check_random_options(const std::vector<Mesh>& meshes, const V
   // to three sources, so that nearly every scene is cut.
   hidden_line::AreaSortOptions sort;
   sort.sources_per_strip = *rc::gen::element<std::size_t>(0, 4096, 1, 2, 3);
+  // Without hidden pieces (as hlr draw sorts), pieces a convex front covers are dropped unclipped.
+  sort.keep_hidden = *rc::gen::arbitrary<bool>();
 
   std::ostringstream context;
   context << "view " << view_text(view) << ", crease " << options.features.crease_degrees << " degrees, back faces "
-          << (remove_back_faces ? "removed" : "kept") << ", " << sort.sources_per_strip << " sources per strip\n";
+          << (remove_back_faces ? "removed" : "kept") << ", " << sort.sources_per_strip << " sources per strip, hidden pieces "
+          << (sort.keep_hidden ? "kept" : "dropped") << "\n";
   for (std::size_t m = 0; m < meshes.size(); ++m) context << "mesh " << m << ":\n" << off_text(meshes[m]);
 
   LineRun run;

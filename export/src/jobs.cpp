@@ -6,6 +6,8 @@
 #include <tbb/global_control.h>
 #include <tbb/task_group.h>
 
+#include <exception>
+#include <memory>
 #include <optional>
 
 namespace hlr::exporter {
@@ -19,6 +21,17 @@ hidden_line::LineOptions line_options(const DrawOptions& options) {
   lines.stop = options.progress.stop;
   return lines;
 }
+
+// Releases `owned` instead of freeing it when an exception (a stop) leaves the scope and `enabled`.
+template <class T>
+struct LeftToExitOnStop {
+  std::unique_ptr<T>& owned;
+  bool enabled;
+  int exceptions = std::uncaught_exceptions();
+  ~LeftToExitOnStop() {
+    if (enabled && std::uncaught_exceptions() > exceptions) (void)owned.release();  // not a leak: the process ends
+  }
+};
 
 // The exact solution of a view: what the drawing is rounded from.
 template <class K>
@@ -37,6 +50,9 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   const ViewFrame<K> frame(view);
   StageTimes times;
   auto solution = std::make_unique<Solution<K>>();
+  // A stopped run in a process that ends with it leaves the solution to the exit as well: freeing
+  // millions of exact nodes would delay the stop by seconds on a large scene.
+  const LeftToExitOnStop<Solution<K>> on_stop{solution, options.free_at_exit};
   const auto begin = std::chrono::steady_clock::now();
   const bool found_before = intersections.found();
   // Beside the polygon stages when a second thread is free. Otherwise first: on a small scene,
@@ -124,16 +140,18 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
 
 // `shared`, or the scene's own intersections in `own`.
 const SceneIntersections& intersections_of(const Scene& scene, const DrawOptions& options,
-                                           const SceneIntersections* shared, std::optional<SceneIntersections>& own) {
+                                           const SceneIntersections* shared, std::unique_ptr<SceneIntersections>& own) {
   if (shared) return *shared;
-  return own.emplace(scene, options.intersections, options.progress);
+  own = std::make_unique<SceneIntersections>(scene, options.intersections, options.progress);
+  return *own;
 }
 
 }  // namespace
 
 LineDrawing draw_lines(const Scene& scene, const View& view, const DrawOptions& options,
                        const SceneIntersections* shared) {
-  std::optional<SceneIntersections> own;
+  std::unique_ptr<SceneIntersections> own;
+  const LeftToExitOnStop<SceneIntersections> on_stop{own, options.free_at_exit};
   const SceneIntersections& intersections = intersections_of(scene, options, shared, own);
   try {
     return with_kernel(options.kernel,
@@ -147,7 +165,7 @@ LineDrawing draw_lines(const Scene& scene, const View& view, const DrawOptions& 
 RasterRun draw_raster(const Scene& scene, const View& view, int resolution, const DrawOptions& options,
                       const SceneIntersections* shared) {
   using hidden_line::seconds_since;
-  std::optional<SceneIntersections> own;
+  std::unique_ptr<SceneIntersections> own;
   const SceneIntersections& intersections = intersections_of(scene, options, shared, own);
   RasterRun run;
   StageTimes times;

@@ -886,7 +886,9 @@ TEST_P(LineScenePerspective, Contract) {
 
 std::vector<PerspectiveCase> scene_perspective_cases() {
   std::vector<PerspectiveCase> out;
-  for (const auto& file : shared_scene_files())
+  auto files = shared_scene_files();
+  for (const auto& f : soak_scene_files()) files.push_back(f);
+  for (const auto& file : files)
     for (int which : {1, 3}) out.push_back({file, which});
   return out;
 }

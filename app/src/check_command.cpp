@@ -61,6 +61,7 @@ int run(CheckOptions options) {
   const Deadline deadline(options.scene.limits.timeout);
   ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
   const Scene scene = read_scene(options.scene.meshes, options.scene.limits, options.scene.cad);
+  check_view_of(scene, *view);
   exporter::DrawOptions job = options.lines;
   job.progress = display.progress();
   const exporter::SceneIntersections intersections(scene, job.intersections, job.progress);  // for every method

@@ -60,6 +60,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   display.stage("reading " + std::to_string(options.scene.meshes.size()) +
                 (options.scene.meshes.size() == 1 ? " mesh" : " meshes"));
   const Scene scene = read_scene(options.scene.meshes, options.scene.limits, options.scene.cad);
+  check_view_of(scene, view);
   const double read = seconds_since(start);
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;
@@ -157,6 +158,10 @@ int run(const DrawOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
   const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
+  if (view->eye && !options.suns.empty()) {
+    std::cerr << "hlr: --sun is not supported with --eye yet (shadows are drawn in orthographic views)" << std::endl;
+    return kExitUsage;
+  }
   const std::optional<exporter::DrawingStyle> style = resolve_style(options.style);
   if (!style) return kExitUsage;
   if (options.raster > 0 && options.scene.kernel != "exact") {

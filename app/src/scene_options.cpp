@@ -8,6 +8,9 @@
 #include <iostream>
 #include <cmath>
 #include <limits>
+#include <sstream>
+
+#include <hlr/kernel/near_plane.hpp>
 
 namespace hlr::app {
 
@@ -23,11 +26,27 @@ void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel) {
                   ->expected(3)
                   ->type_name("X,Y,Z");
   dir->excludes(view);
-  cmd.add_option("--up", options.up, "up vector for --dir (default +Z, or +Y when looking along Z)")
+  auto* eye = cmd.add_option("--eye", options.eye, "perspective view from this point, looking at --target or along --dir")
+                  ->delimiter(',')
+                  ->expected(3)
+                  ->type_name("X,Y,Z");
+  eye->excludes(view);
+  auto* target = cmd.add_option("--target", options.target, "the point a perspective view (--eye) looks at")
+                     ->delimiter(',')
+                     ->expected(3)
+                     ->needs(eye)
+                     ->excludes(dir)
+                     ->type_name("X,Y,Z");
+  cmd.add_option("--up", options.up, "up vector for --dir or --target (default +Z, or +Y when looking along Z)")
       ->delimiter(',')
       ->expected(3)
-      ->needs(dir)
       ->type_name("X,Y,Z");
+  cmd.add_option("--near", options.near,
+                 "perspective: the near plane at this fraction of the deepest vertex's distance along the view "
+                 "(default 0.001); what lies nearer is clipped away")
+      ->check(CLI::Range(0.0, 1.0))
+      ->needs(eye)
+      ->type_name("F");
   cmd.add_option("--threads", options.threads, "threads to use (0: every core); the output is the same for any number")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str()
@@ -79,11 +98,51 @@ std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options) {
                                                static_cast<std::size_t>(options.threads));
 }
 
+namespace {
+
+bool finite(const std::vector<double>& v) {
+  return std::all_of(v.begin(), v.end(), [](double c) { return std::isfinite(c); });
+}
+
+}  // namespace
+
 std::optional<View> resolve_view(const SceneOptions& options) {
   View view;
-  if (!options.direction.empty()) {
+  if (!options.up.empty() && options.direction.empty() && options.target.empty()) {
+    std::cerr << "hlr: --up needs --dir or --target" << std::endl;
+    return std::nullopt;
+  }
+  if (!options.eye.empty()) {
+    if (options.target.empty() && options.direction.empty()) {
+      std::cerr << "hlr: --eye: give --target X,Y,Z or --dir X,Y,Z (where the perspective view looks)" << std::endl;
+      return std::nullopt;
+    }
+    if (!finite(options.eye) || !finite(options.target)) {
+      std::cerr << "hlr: --eye/--target: " << (finite(options.eye) ? "target" : "eye") << " is not finite" << std::endl;
+      return std::nullopt;
+    }
+    view.eye = Vec3{options.eye[0], options.eye[1], options.eye[2]};
+    if (options.near > 0) {
+      if (!(options.near < 1)) {
+        std::cerr << "hlr: --near: the fraction must lie strictly between 0 and 1" << std::endl;
+        return std::nullopt;
+      }
+      view.near_fraction = options.near;
+    }
+  }
+  // With --target, the direction is target - eye rounded to double, then taken as exact.
+  std::vector<double> direction = options.direction;
+  if (!options.target.empty()) {
+    direction.resize(3);
+    for (int k = 0; k < 3; ++k) direction[k] = options.target[k] - options.eye[k];
+    if (direction == std::vector<double>{0, 0, 0}) {
+      std::cerr << "hlr: --eye/--target: the eye is at the target" << std::endl;
+      return std::nullopt;
+    }
+  }
+  if (!direction.empty()) {
     view.name = "custom";
-    view.direction = {options.direction[0], options.direction[1], options.direction[2]};
+    view.direction = {direction[0], direction[1], direction[2]};
     view.up = options.up.empty() ? Vec3{0, 0, 1} : Vec3{options.up[0], options.up[1], options.up[2]};
     // The default up is +Z (CAD convention); looking straight along Z, take +Y instead.
     if (options.up.empty() && view.direction[0] == 0 && view.direction[1] == 0) view.up = {0, 1, 0};
@@ -93,10 +152,20 @@ std::optional<View> resolve_view(const SceneOptions& options) {
     return std::nullopt;
   }
   if (auto defect = view_defect(view)) {
-    std::cerr << "hlr: " << (options.direction.empty() ? "--view" : "--dir/--up") << ": " << *defect << std::endl;
+    const char* which = !options.eye.empty() ? "--eye" : options.direction.empty() ? "--view" : "--dir/--up";
+    std::cerr << "hlr: " << which << ": " << *defect << std::endl;
     return std::nullopt;
   }
   return view;
+}
+
+void check_view_of(const Scene& scene, const View& view) {
+  if (const auto defect = perspective_defect(scene.meshes, view)) {
+    const Vec3& e = *view.eye;
+    std::ostringstream eye;
+    eye << e[0] << ',' << e[1] << ',' << e[2];
+    throw UsageError("--eye " + eye.str() + ": " + *defect);
+  }
 }
 
 Scene read_scene(const std::vector<std::string>& paths, const RunLimits& limits, const cad::CadOptions& cad) {

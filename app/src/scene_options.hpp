@@ -34,6 +34,8 @@ struct SceneOptions {
   std::vector<std::string> meshes;
   std::string view = "iso";
   std::vector<double> direction, up;
+  std::vector<double> eye, target;  // a perspective view: --eye with --target or --dir
+  double near = 0;                  // --near: the near plane's fraction of the deepest vertex (0: 1/1000)
   std::string kernel = "exact";
   int threads = 0;  // 0: every core
   RunLimits limits;
@@ -46,8 +48,8 @@ void add_cad_options(CLI::App& cmd, cad::CadOptions& cad);
 // What the MESH... argument reads, for its help line.
 inline constexpr const char* kInputKinds = "mesh files (OFF, OBJ, STL, PLY) or CAD models (STEP, IGES, BREP)";
 
-// MESH... (positional), --view, --dir, --up, --threads, the limits, the CAD options and, unless
-// `kernel` is false, --kernel.
+// MESH... (positional), --view, --dir, --up, --eye, --target, --near, --threads, the limits, the
+// CAD options and, unless `kernel` is false, --kernel.
 void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel = true);
 
 // Limits oneTBB to options.threads for as long as the returned object lives (0: no limit). The
@@ -56,6 +58,10 @@ std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options);
 
 // The view the options name, or nothing after a one-line usage error on stderr.
 std::optional<View> resolve_view(const SceneOptions& options);
+
+// Refuses a perspective view that cannot be drawn of this scene (near_plane.hpp
+// perspective_defect): a UsageError naming --eye.
+void check_view_of(const Scene& scene, const View& view);
 
 // Reads every mesh and CAD model (hlr::cad::load_scene: throws ImportError) and refuses a scene
 // beyond limits.max_faces (UserError).

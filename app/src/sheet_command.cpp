@@ -25,6 +25,7 @@ struct SheetOptions {
   std::vector<std::string> meshes, outputs;
   std::string views = "front,top,right,iso";
   std::vector<double> direction, up;
+  std::string eye;  // --eye: refused (perspective sheets are not laid out yet)
   std::string projection = "third";
   std::string kernel = "exact";
   int threads = 0;
@@ -87,6 +88,10 @@ int run(const SheetOptions& options) {
   SceneOptions scene_options;
   scene_options.threads = options.threads;
   const auto threads = thread_limit(scene_options);
+  if (!options.eye.empty()) {
+    std::cerr << "hlr: --eye is not supported by hlr sheet yet (draw a perspective view with hlr draw --eye)" << std::endl;
+    return kExitUsage;
+  }
   const auto views = resolve_views(options);
   if (!views) return kExitUsage;
   const auto style = resolve_style(options.style);
@@ -184,6 +189,7 @@ Subcommand add_sheet_command(CLI::App& parent) {
       ->expected(3)
       ->needs(dir)
       ->type_name("X,Y,Z");
+  cmd->add_option("--eye", options->eye, "perspective views are not laid out on sheets yet (refused)")->type_name("X,Y,Z");
   cmd->add_option("--projection", options->projection,
                   "ISO 5456-2 method: third (top view above the front view, right view to its right) or first "
                   "(top view below, right view to the left)")

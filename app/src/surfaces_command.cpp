@@ -41,6 +41,7 @@ int solve(const SurfacesOptions& options, const View& view) {
   const Deadline deadline(options.scene.limits.timeout);
   ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
   const Scene scene = read_scene(options.scene.meshes, options.scene.limits, options.scene.cad);
+  check_view_of(scene, view);
   exporter::SurfacesOptions job;
   parse_kernel_kind(options.scene.kernel, job.kernel);
   job.sources.remove_back_faces = !options.keep_back_faces;

@@ -9,6 +9,7 @@
 #include <exception>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 namespace hlr::exporter {
 namespace {
@@ -47,7 +48,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
                   const DrawOptions& options) {
   using hidden_line::seconds_since;
   const Progress& progress = options.progress;
-  const ViewFrame<K> frame(view);
+  const ViewFrame<K> frame(view, scene.meshes);
   StageTimes times;
   auto solution = std::make_unique<Solution<K>>();
   // A stopped run in a process that ends with it leaves the solution to the exit as well: freeing
@@ -100,6 +101,9 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   solution->segments = hidden_line::drawing_segments<K>(solution->lines, progress.stop);
   times.precedence = seconds_since(mark);
   std::vector<DrawingArea> shadows;
+  // Shadow polygons are projected into the view without a near plane: orthographic views only.
+  if (!options.shadow_lights.empty() && frame.perspective())
+    throw std::invalid_argument("shadows in a perspective drawing are not supported yet");
   if (!options.shadow_lights.empty()) {
     if constexpr (std::is_same_v<K, ExactKernel>) {
       check();

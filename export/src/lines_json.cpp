@@ -155,8 +155,9 @@ json input_json(const InputInfo& input) {
 
 json view_json(const ViewInfo& v) {
   json view;
-  view["projection"] = "orthographic";
+  view["projection"] = v.eye ? "perspective" : "orthographic";
   if (v.name != "custom") view["name"] = v.name;
+  if (v.eye) view["eye"] = {(*v.eye)[0], (*v.eye)[1], (*v.eye)[2]};
   view["direction"] = {v.direction[0], v.direction[1], v.direction[2]};
   view["up"] = {v.up[0], v.up[1], v.up[2]};
   json matrix = json::array();

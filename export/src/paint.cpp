@@ -119,7 +119,9 @@ void paint_draw_title(Canvas& c, const LineDrawing& drawing, const SheetFrame& l
   for (const auto& f : drawing.input.files)
     if (f != last) files += (files.empty() ? "" : ", ") + base_name(last = f);
   std::string view = drawing.view.name.empty() ? "custom" : drawing.view.name;
-  if (view == "custom") {
+  if (const auto& e = drawing.view.eye) {
+    view = "perspective from (" + fixed((*e)[0], 6) + ", " + fixed((*e)[1], 6) + ", " + fixed((*e)[2], 6) + ")";
+  } else if (view == "custom") {
     const auto& d = drawing.view.direction;
     view += " (" + fixed(d[0], 6) + ", " + fixed(d[1], 6) + ", " + fixed(d[2], 6) + ")";
   }

@@ -24,7 +24,7 @@ UserError inexact_kernel_failure(const Scene& scene, KernelKind kind, const std:
 
 template <class K>
 ViewSolution<K> solve_view(const Scene& scene, const View& view, const SolveOptions& options) {
-  ViewSolution<K> solution{ViewFrame<K>(view), {}, {}, {}};
+  ViewSolution<K> solution{ViewFrame<K>(view, scene.meshes), {}, {}, {}};
   const Progress& progress = options.progress;
   const auto start = std::chrono::steady_clock::now();
   try {

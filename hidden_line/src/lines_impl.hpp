@@ -210,9 +210,13 @@ class Classifier {
     clip::LineId line = kNoLine;
     std::uint32_t mesh = 0, v0 = kNoVertex, v1 = kNoVertex;
   };
+  // A mesh edge's ends in front of the near plane (NearCut::edge_ends): an end replaced by the
+  // edge's crossing with it is no mesh vertex.
   Query mesh_edge(std::uint32_t mesh, std::uint32_t v0, std::uint32_t v1) const {
     const auto& images = sources_.image_points[mesh];
-    return {view_points_[mesh][v0], view_points_[mesh][v1], images[v0], images[v1], line_of_edge(mesh, v0, v1), mesh, v0, v1};
+    const auto [i0, i1] = *sources_.near_cuts[mesh].edge_ends(v0, v1);
+    return {view_points_[mesh][i0], view_points_[mesh][i1], images[i0], images[i1], line_of_edge(mesh, v0, v1), mesh,
+            i0 == v0 ? v0 : kNoVertex, i1 == v1 ? v1 : kNoVertex};
   }
   static Query constructed(const ViewPoint<K>& a, const ViewPoint<K>& b) {
     return {a, b, G::point(a.x, a.y), G::point(b.x, b.y)};
@@ -417,15 +421,19 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
   };
 
   for (std::uint32_t m = 0; m < meshes.size(); ++m) {
+    const NearCut<K>& cut = sources.near_cuts[m];
     for (const FeatureEdge& edge : feature_edges(meshes[m], frame.view(), options.features)) {
+      // In perspective, the part in front of the near plane; an edge wholly behind it is not drawn.
+      const auto ends = cut.edge_ends(edge.v0, edge.v1);
+      if (!ends) continue;
       FeatureLine<K> line;
-      line.a = classifier.view_point(m, edge.v0);
-      line.b = classifier.view_point(m, edge.v1);
+      line.a = classifier.view_point(m, (*ends)[0]);
+      line.b = classifier.view_point(m, (*ends)[1]);
       line.kind = edge.kind;
       line.mesh = m;
       line.v0 = edge.v0;
       line.v1 = edge.v1;
-      line.has_model_ends = true;
+      line.has_model_ends = (*ends)[0] == edge.v0 && (*ends)[1] == edge.v1;
       line.model_a = meshes[m].vertices[edge.v0];
       line.model_b = meshes[m].vertices[edge.v1];
       add(std::move(line), {{m, &edge.faces}});
@@ -433,9 +441,11 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
   }
   if (options.intersections) {
     for (const IntersectionSegment& s : intersections) {
+      const auto ends = frame.to_view_clipped(s.a, s.b);
+      if (!ends) continue;
       FeatureLine<K> line;
-      line.a = frame.to_view(s.a);
-      line.b = frame.to_view(s.b);
+      line.a = ends->first;
+      line.b = ends->second;
       line.kind = FeatureKind::intersection;
       line.mesh = s.mesh_a;
       line.meeting_degrees = s.meeting_degrees;
@@ -461,6 +471,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
   }
   out.stats.lines = out.lines.size();
   out.view_direction = frame.view().direction;
+  out.view_eye = frame.view().eye;
   return out;
 }
 
@@ -491,6 +502,9 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   auto collinear_lines = [&](std::uint32_t i, std::uint32_t j) {
     const FeatureLine<K>&li = lines.lines[i], &lj = lines.lines[j];
     if (li.has_model_ends && lj.has_model_ends) {
+      if (const auto& e = lines.view_eye)
+        return collinear_seen_from(li.model_a, li.model_b, lj.model_a, *e) &&
+               collinear_seen_from(li.model_a, li.model_b, lj.model_b, *e);
       const Vec3& d = lines.view_direction;
       return collinear_in_view(li.model_a, li.model_b, lj.model_a, d) && collinear_in_view(li.model_a, li.model_b, lj.model_b, d);
     }

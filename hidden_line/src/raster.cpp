@@ -57,7 +57,10 @@ RasterGrid raster_grid(double x0, double y0, double x1, double y1, int resolutio
 struct RasterDrawing::Impl {
   ViewFrame<DoubleKernel> frame;
   RasterGrid grid;
-  std::vector<std::vector<Vec3>> points;  // per mesh, per vertex: orthonormal view coordinates
+  // Per mesh: what the near plane of a perspective view clips (near_plane.hpp), and its points,
+  // the vertices and then the edges' crossings with the near plane, in orthonormal view coordinates.
+  std::vector<NearCut<DoubleKernel>> cuts;
+  std::vector<std::vector<Vec3>> points;
   std::vector<RasterFace> faces;
   std::vector<std::uint32_t> first_face;  // per mesh: its first global face id
   std::vector<RasterLine> lines;
@@ -67,18 +70,15 @@ struct RasterDrawing::Impl {
 
   Impl(const std::vector<Mesh>& meshes, const View& view, const std::vector<IntersectionSegment>& intersections,
        const LineOptions& options, const RasterOptions& raster)
-      : frame(view) {
+      : frame(view, meshes) {
     if (raster.resolution < 16 || raster.resolution > 8192)
       throw std::invalid_argument("raster resolution " + std::to_string(raster.resolution) +
                                   " is outside 16..8192 pixels");
-    auto to_view = [&](double x, double y, double z) -> Vec3 {
-      const ViewPoint<DoubleKernel> p = frame.to_view(x, y, z);
-      return {p.x / frame.scale(0), p.y / frame.scale(1), p.z / frame.scale(2)};
-    };
     for (const Mesh& mesh : meshes) {
+      const NearCut<DoubleKernel>& cut = cuts.emplace_back(mesh, frame);
       auto& pts = points.emplace_back();
-      pts.reserve(mesh.vertices.size());
-      for (const auto& v : mesh.vertices) pts.push_back(to_view(v[0], v[1], v[2]));
+      pts.reserve(cut.points().size());
+      for (const auto& p : cut.points()) pts.push_back(orthonormal(p));
     }
     make_faces(meshes);
     make_lines(meshes, view, intersections, options);
@@ -86,13 +86,23 @@ struct RasterDrawing::Impl {
     fill_zbuffer();
   }
 
+  Vec3 orthonormal(const ViewPoint<DoubleKernel>& p) const {
+    return {p.x / frame.scale(0), p.y / frame.scale(1), p.z / frame.scale(2)};
+  }
+
   void make_faces(const std::vector<Mesh>& meshes) {
+    using Part = NearCut<DoubleKernel>::Part;
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       first_face.push_back(static_cast<std::uint32_t>(faces.size()));
       for (std::uint32_t f = 0; f < meshes[m].faces.size(); ++f) {
         RasterFace face;
         face.mesh = m;
-        face.corners = meshes[m].faces[f];
+        const Part part = cuts[m].part(f);
+        if (part == Part::behind) {  // behind the near plane: a face that fills nothing
+          faces.push_back(face);
+          continue;
+        }
+        face.corners = part == Part::cut ? cuts[m].ring_points(f) : meshes[m].faces[f];
         // Newell's normal, then the plane through the centroid.
         double n[3] = {0, 0, 0}, centroid[3] = {0, 0, 0};
         const auto& corners = face.corners;
@@ -121,12 +131,19 @@ struct RasterDrawing::Impl {
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       const auto& v = meshes[m].vertices;
       for (const FeatureEdge& edge : feature_edges(meshes[m], view, options.features)) {
+        const auto ends = cuts[m].edge_ends(edge.v0, edge.v1);
+        if (!ends) continue;  // behind the near plane
         RasterLine r;
-        r.a = points[m][edge.v0];
-        r.b = points[m][edge.v1];
+        r.a = points[m][(*ends)[0]];
+        r.b = points[m][(*ends)[1]];
         for (std::uint32_t f : edge.faces) r.own.push_back(first_face[m] + f);
-        r.line.a = frame.to_view(v[edge.v0][0], v[edge.v0][1], v[edge.v0][2]);
-        r.line.b = frame.to_view(v[edge.v1][0], v[edge.v1][1], v[edge.v1][2]);
+        if (ends == std::array<std::uint32_t, 2>{edge.v0, edge.v1}) {
+          r.line.a = frame.to_view(v[edge.v0][0], v[edge.v0][1], v[edge.v0][2]);
+          r.line.b = frame.to_view(v[edge.v1][0], v[edge.v1][1], v[edge.v1][2]);
+        } else {
+          r.line.a = cuts[m].points()[(*ends)[0]];
+          r.line.b = cuts[m].points()[(*ends)[1]];
+        }
         r.line.kind = edge.kind;
         r.line.mesh = m;
         r.line.v0 = edge.v0;
@@ -137,11 +154,13 @@ struct RasterDrawing::Impl {
     }
     if (!options.intersections) return;
     for (const IntersectionSegment& s : intersections) {
+      const auto ends = frame.to_view_clipped(s.a, s.b);
+      if (!ends) continue;
       RasterLine r;
-      r.line.a = frame.to_view(s.a);
-      r.line.b = frame.to_view(s.b);
-      r.a = {r.line.a.x / frame.scale(0), r.line.a.y / frame.scale(1), r.line.a.z / frame.scale(2)};
-      r.b = {r.line.b.x / frame.scale(0), r.line.b.y / frame.scale(1), r.line.b.z / frame.scale(2)};
+      r.line.a = ends->first;
+      r.line.b = ends->second;
+      r.a = orthonormal(r.line.a);
+      r.b = orthonormal(r.line.b);
       r.line.kind = FeatureKind::intersection;
       r.line.mesh = s.mesh_a;
       for (std::uint32_t f : s.faces_a) r.own.push_back(first_face[s.mesh_a] + f);
@@ -153,8 +172,10 @@ struct RasterDrawing::Impl {
 
   void make_grid(int resolution) {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0, z0 = x0, z1 = -x0;
-    for (const auto& pts : points)
-      for (const Vec3& p : pts) {
+    for (std::size_t m = 0; m < points.size(); ++m)
+      for (std::uint32_t v = 0; v < points[m].size(); ++v) {
+        if (cuts[m].behind(v)) continue;
+        const Vec3& p = points[m][v];
         x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
         y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
         z0 = std::min(z0, p[2]), z1 = std::max(z1, p[2]);

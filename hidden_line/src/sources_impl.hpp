@@ -10,6 +10,7 @@
 
 #include <hlr/hidden_line/visibility.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
+#include <hlr/kernel/near_plane.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -99,12 +100,17 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     out.stats.open_components += topo.open_components;
     out.stats.inward_components += topo.inward_components;
 
-    std::vector<ViewPoint<K>> vp(mesh.vertices.size());
-    std::vector<P> p2(mesh.vertices.size());
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-      vp[v] = frame.to_view(mesh.vertices[v]);
-      p2[v] = G::point(vp[v].x, vp[v].y);
-    }
+    // The vertices in view coordinates, then (perspective) the points where edges cross the near
+    // plane; faces reaching behind it are clipped to rings of those points (near_plane.hpp).
+    NearCut<K> cut(mesh, frame);
+    std::vector<ViewPoint<K>> vp = cut.take_points();
+    std::vector<P> p2(vp.size());
+    for (std::size_t v = 0; v < vp.size(); ++v) p2[v] = G::point(vp[v].x, vp[v].y);
+    using Part = typename NearCut<K>::Part;
+    // A face's corners as point indices: its vertices, or its ring where the near plane cuts it.
+    auto corners = [&](std::uint32_t f) -> const std::vector<std::uint32_t>& {
+      return cut.part(f) == Part::cut ? cut.ring_points(f) : mesh.faces[f];
+    };
 
     // One support line per mesh edge.
     std::vector<clip::LineId> edge_line(topo.uses.size());
@@ -117,7 +123,10 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       const std::uint32_t v0 = std::uint32_t(topo.uses[i].key >> 32), v1 = std::uint32_t(topo.uses[i].key);
       edge_line[i] = static_cast<clip::LineId>(out.lines.size());
       edge_lines.emplace_back(topo.uses[i].key, edge_line[i]);
-      out.lines.push_back({p2[v0], p2[v1]});
+      // An edge reaching behind the near plane lies on the line of its part in front; one wholly
+      // behind is no face's edge in the view, and gets a line of one point.
+      const auto ends = cut.edge_ends(v0, v1);
+      out.lines.push_back(ends ? clip::SupportLine<K>{p2[(*ends)[0]], p2[(*ends)[1]]} : clip::SupportLine<K>{p2[v0], p2[v0]});
       LineOrigin origin;
       origin.kind = LineOrigin::mesh_edge;
       origin.mesh = static_cast<std::int32_t>(mi);
@@ -136,7 +145,8 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     std::vector<int> facing(nf);
     for (std::uint32_t f = 0; f < nf; ++f) {
       options.stop.check_every(polls, 4096);
-      const auto& face = mesh.faces[f];
+      if (cut.part(f) == Part::behind) continue;
+      const auto& face = corners(f);
       if (face.size() == 3) {
         facing[f] = G::orientation(p2[face[0]], p2[face[1]], p2[face[2]]);
       } else {
@@ -146,10 +156,16 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       }
     }
     std::vector<bool> keep(nf);
+    // A component that the near plane cuts open shows its inside through the cut: its back faces
+    // stay.
+    const bool remove_back_faces = options.remove_back_faces && !cut.clipped();
+    auto edge_on = [&](std::uint32_t f) { return facing[f] == 0 && cut.part(f) != Part::behind; };
     for (std::uint32_t f = 0; f < nf; ++f) {
-      if (facing[f] == 0) {
+      if (cut.part(f) == Part::behind) {
+        ++out.stats.faces_behind_eye;
+      } else if (facing[f] == 0) {
         ++out.stats.edge_on_faces_removed;
-      } else if (facing[f] * topo.outward[f] < 0 && options.remove_back_faces) {
+      } else if (facing[f] * topo.outward[f] < 0 && remove_back_faces) {
         ++out.stats.back_faces_removed;
       } else {
         keep[f] = true;
@@ -166,7 +182,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     auto inside_region = [&](EdgeUses first, EdgeUses last) {
       if (!options.consolidate || last - first != 2) return false;
       const EdgeUse &u = first[0], &w = first[1];
-      if (facing[u.face] != 0 || facing[w.face] != 0 || u.forward == w.forward ||
+      if (!edge_on(u.face) || !edge_on(w.face) || u.forward == w.forward ||
           topo.coplanar_group[u.face] != topo.coplanar_group[w.face])
         return false;
       if (mesh.faces[u.face].size() != 3 || mesh.faces[w.face].size() != 3) return false;
@@ -176,26 +192,65 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
                                         point(third_corner(w.face, w.key))) == CGAL::NEGATIVE;
     };
     for_each_edge(topo.uses, [&](EdgeUses first, EdgeUses last) {
-      if (std::none_of(first, last, [&](const EdgeUse& u) { return facing[u.face] == 0; })) return;
+      if (std::none_of(first, last, [&](const EdgeUse& u) { return edge_on(u.face); })) return;
       if (inside_region(first, last)) return;
-      out.edge_on_edges.push_back({mi, edge_low(first->key), edge_high(first->key)});
+      if (const auto ends = cut.edge_ends(edge_low(first->key), edge_high(first->key)))
+        out.edge_on_edges.push_back({mi, (*ends)[0], (*ends)[1]});
     });
+    // A clipped face seen edge-on covers along its cut too.
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      if (cut.part(f) != Part::cut || facing[f] != 0) continue;
+      const auto& ring = cut.ring(f);
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        if (ring[i].a == NearCut<K>::kCut) out.edge_on_edges.push_back({mi, ring[i].point, ring[(i + 1) % ring.size()].point});
+    }
+
+    // The line of the cut through each coplanar group's faces (the group's plane meets the near
+    // plane in one line), made when a contour first needs it.
+    std::vector<clip::LineId> cut_lines;
+    auto cut_line = [&](std::uint32_t f, const P& a, const P& b) {
+      if (cut_lines.empty()) cut_lines.assign(nf, ~clip::LineId(0));
+      clip::LineId& id = cut_lines[topo.coplanar_group[f]];
+      if (id == ~clip::LineId(0)) {
+        id = static_cast<clip::LineId>(out.lines.size());
+        out.lines.push_back({a, b});
+        out.line_origins.push_back(LineOrigin{});
+      }
+      return id;
+    };
 
     // A face's contour, counter-clockwise in the view.
     auto face_contour = [&](std::uint32_t f) {
-      const auto& face = mesh.faces[f];
+      const bool ring = cut.part(f) == Part::cut;
+      const auto& face = corners(f);
       clip::Contour<K> c;
       const std::size_t n = face.size();
+      // The edge from corner k to corner `next`, adjacent to it.
+      auto line_between = [&](std::size_t k, std::size_t next) {
+        if (!ring) return line_of(face[k], face[next]);
+        const auto& corner = cut.ring(f)[(k + 1) % n == next ? k : next];
+        if (corner.a != NearCut<K>::kCut) return line_of(corner.a, corner.b);
+        return cut_line(f, p2[face[k]], p2[face[next]]);
+      };
       for (std::size_t i = 0; i < n; ++i) {
         const std::size_t k = facing[f] > 0 ? i : n - 1 - i;
         const std::size_t next = facing[f] > 0 ? (i + 1) % n : (2 * n - 2 - i) % n;
         c.points.push_back(p2[face[k]]);
-        c.lines.push_back(line_of(face[k], face[next]));
+        c.lines.push_back(line_between(k, next));
       }
       return c;
     };
+    // Three corners whose images span the face's plane: the chosen input corners, or for a ring
+    // the first fan triangle from its first corner with an area (it has one: it is not edge-on).
+    auto plane_corners = [&](std::uint32_t f) -> std::array<std::uint32_t, 3> {
+      if (cut.part(f) != Part::cut) return topo.plane_vertices[f];
+      const auto& c = corners(f);
+      for (std::size_t k = 2; k < c.size(); ++k)
+        if (G::orientation(p2[c[0]], p2[c[k - 1]], p2[c[k]]) != 0) return {c[0], c[k - 1], c[k]};
+      return {c[0], c[1], c[2]};
+    };
     auto plane_of = [&](std::uint32_t f) {
-      const auto& pv = topo.plane_vertices[f];
+      const auto pv = plane_corners(f);
       const ViewPoint<K>&a = vp[pv[0]], &b = vp[pv[1]], &c = vp[pv[2]];
       const FT ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
       const FT wx = c.x - a.x, wy = c.y - a.y, wz = c.z - a.z;
@@ -248,6 +303,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     }
     out.view_points.push_back(std::move(vp));
     out.image_points.push_back(std::move(p2));
+    out.near_cuts.push_back(std::move(cut));
   }
   out.stats.sources = out.polygons.size();
   return out;

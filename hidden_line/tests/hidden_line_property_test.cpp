@@ -47,5 +47,13 @@ RC_GTEST_PROP(HiddenLineProperty, TriangleSoupsSatisfyTheContract, ()) {
   check_soup(soup);
 }
 
+// In perspective (soup_generator.hpp gen_perspective_view), near-plane cuts included.
+RC_GTEST_PROP(HiddenLineProperty, PerspectiveSoupsSatisfyTheContract, ()) {
+  Soup soup = random_soup();
+  soup.view = *gen_perspective_view();
+  RC_PRE(!perspective_defect({to_mesh(soup)}, soup.view));
+  check_soup(soup);
+}
+
 }  // namespace
 }  // namespace hlr::hltest

@@ -40,11 +40,22 @@ ExactViewBasis::ExactViewBasis(const View& view) {
   y_[1] = x_[2] * d[0] - x_[0] * d[2];
   y_[2] = x_[0] * d[1] - x_[1] * d[0];
   for (int i = 0; i < 3; ++i) z_[i] = -d[i];
+  if (view.eye) eye_ = P3((*view.eye)[0], (*view.eye)[1], (*view.eye)[2]);
 }
 
 VP ExactViewBasis::to_view(const P3& p) const {
-  return {x_[0] * p.x() + x_[1] * p.y() + x_[2] * p.z(), y_[0] * p.x() + y_[1] * p.y() + y_[2] * p.z(),
-          z_[0] * p.x() + z_[1] * p.y() + z_[2] * p.z()};
+  if (!eye_)
+    return {x_[0] * p.x() + x_[1] * p.y() + x_[2] * p.z(), y_[0] * p.x() + y_[1] * p.y() + y_[2] * p.z(),
+            z_[0] * p.x() + z_[1] * p.y() + z_[2] * p.z()};
+  const EK::Vector_3 q = p - *eye_;
+  const FT w = -(z_[0] * q.x() + z_[1] * q.y() + z_[2] * q.z());
+  return {(x_[0] * q.x() + x_[1] * q.y() + x_[2] * q.z()) / w, (y_[0] * q.x() + y_[1] * q.y() + y_[2] * q.z()) / w,
+          1 / w};
+}
+
+EK::Vector_3 ExactViewBasis::toward_viewer(const P3& p) const {
+  if (eye_) return *eye_ - p;
+  return {z_[0], z_[1], z_[2]};
 }
 
 VP ExactViewBasis::to_view(const std::array<double, 3>& p) const { return to_view(P3(p[0], p[1], p[2])); }
@@ -122,7 +133,6 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
                                            bool smooth_edges) {
   const double cos_threshold = std::cos(crease_degrees * std::numbers::pi / 180.0);
   const ExactViewBasis basis(view);
-  const EK::Vector_3 toward = basis.toward_viewer();
   std::vector<OracleFeature> out;
   for (std::uint32_t m = 0; m < meshes.size(); ++m) {
     const Mesh& mesh = meshes[m];
@@ -170,7 +180,11 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
         // The front side is the outside for a closed solid; elsewhere the two sides are alike, so a
         // silhouette is where the (alike-oriented) faces' facings differ at all.
         const int side = sides[f];
-        const int f_sign = CGAL::sign(nf * toward), g_sign = CGAL::sign(ng * toward);
+        const auto& corner = mesh.vertices[mesh.faces[f][0]];
+        const EK::Vector_3 toward = basis.toward_viewer(P3(corner[0], corner[1], corner[2]));
+        const auto& g_corner = mesh.vertices[mesh.faces[g][0]];
+        const EK::Vector_3 g_toward = basis.toward_viewer(P3(g_corner[0], g_corner[1], g_corner[2]));
+        const int f_sign = CGAL::sign(nf * toward), g_sign = CGAL::sign(ng * g_toward);
         const bool turns = side != 0 ? (f_sign * side > 0) != (g_sign * side > 0) : f_sign != g_sign;
         const bool crease_only = fan.at(key);
         if (turns && !crease_only) {
@@ -347,7 +361,7 @@ PenetrationSearch find_penetrations(const std::vector<Mesh>& meshes) {
 // Visibility.
 
 LineOracle::LineOracle(const std::vector<Mesh>& meshes, const View& view)
-    : meshes_(&meshes), view_(view), surfaces_(meshes, view), basis_(view) {
+    : meshes_(&meshes), view_(view), surfaces_(meshes, view), basis_(view), near_(meshes, view) {
   std::size_t total = 0;
   for (const Mesh& mesh : meshes) {
     first_.push_back(total);
@@ -357,13 +371,26 @@ LineOracle::LineOracle(const std::vector<Mesh>& meshes, const View& view)
   bool first = true;
   for (std::uint32_t m = 0; m < meshes.size(); ++m) {
     const Mesh& mesh = meshes[m];
-    std::vector<VP> vp;
-    vp.reserve(mesh.vertices.size());
-    for (const auto& v : mesh.vertices) vp.push_back(basis_.to_view(v));
+    std::vector<VP> vp(mesh.vertices.size());  // of the vertices in front of the near plane
+    std::vector<bool> front(mesh.vertices.size());
+    auto model = [&](std::uint32_t v) { return P3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]); };
+    for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v)
+      if ((front[v] = near_.in_front(model(v)))) vp[v] = basis_.to_view(mesh.vertices[v]);
     for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
       FaceData fd;
       fd.ref = {m, f};
-      for (std::uint32_t v : mesh.faces[f]) fd.corners.push_back(vp[v]);
+      const auto& face = mesh.faces[f];
+      if (std::all_of(face.begin(), face.end(), [&](std::uint32_t v) { return front[v]; })) {
+        for (std::uint32_t v : face) fd.corners.push_back(vp[v]);
+      } else {  // its part in front of the near plane; none: a face of no corners, which covers nothing
+        std::vector<P3> polygon;
+        for (std::uint32_t v : face) polygon.push_back(model(v));
+        for (const P3& p : near_.clip(polygon)) fd.corners.push_back(basis_.to_view(p));
+        if (fd.corners.empty()) {
+          faces_.push_back(std::move(fd));
+          continue;
+        }
+      }
       newell(fd.corners, fd.nx, fd.ny, fd.nz);
       const VP& c0 = fd.corners[0];
       fd.d = fd.nx * c0.x + fd.ny * c0.y + fd.nz * c0.z;
@@ -392,6 +419,7 @@ LineOracle::LineOracle(const std::vector<Mesh>& meshes, const View& view)
     return std::clamp(static_cast<int>(std::floor((v - lo) / (hi - lo) * n)), 0, n - 1);
   };
   for (std::uint32_t id = 0; id < faces_.size(); ++id) {
+    if (faces_[id].corners.empty()) continue;  // behind the near plane: never a candidate
     const CGAL::Bbox_2& b = surfaces_.face(faces_[id].ref).box;
     const int x0 = index(b.xmin(), extent_.xmin(), extent_.xmax(), nx_);
     const int x1 = index(b.xmax(), extent_.xmin(), extent_.xmax(), nx_);
@@ -400,6 +428,14 @@ LineOracle::LineOracle(const std::vector<Mesh>& meshes, const View& view)
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) cells_[static_cast<std::size_t>(y) * nx_ + x].push_back(id);
   }
+}
+
+std::optional<std::pair<VP, VP>> LineOracle::edge_ends(std::uint32_t mesh, std::uint32_t v0, std::uint32_t v1) const {
+  const auto& v = (*meshes_)[mesh].vertices;
+  const P3 a(v[v0][0], v[v0][1], v[v0][2]), b(v[v1][0], v[v1][1], v[v1][2]);
+  const auto part = near_.clip(a, b);
+  if (!part) return std::nullopt;
+  return std::pair{basis_.to_view(part->first), basis_.to_view(part->second)};
 }
 
 std::vector<std::uint32_t> LineOracle::candidates(const CGAL::Bbox_2& box) const {
@@ -709,9 +745,14 @@ class LineChecker {
         fail("(c) duplicate edge", line_text(i) + " repeats " + line_text(have[key]));
         continue;
       }
-      // The ends are the exact view coordinates of the edge's vertices.
-      const VP& p = oracle_.vertex(l.mesh, l.v0);
-      const VP& q = oracle_.vertex(l.mesh, l.v1);
+      // The ends are the exact view coordinates of the edge's vertices (of its part in front of
+      // the near plane).
+      const auto ends = oracle_.edge_ends(l.mesh, l.v0, l.v1);
+      if (!ends) {
+        fail("(c) edge behind the eye", line_text(i) + " lies behind the near plane");
+        continue;
+      }
+      const VP &p = ends->first, &q = ends->second;
       if (!((same(l.a, p) && same(l.b, q)) || (same(l.a, q) && same(l.b, p))))
         fail("(c) endpoints", line_text(i) + ": vertex " + std::to_string(l.v0) + " is at " + vp_text(p) + ", vertex " +
                                   std::to_string(l.v1) + " at " + vp_text(q));
@@ -723,7 +764,7 @@ class LineChecker {
       }
     }
     for (const auto& e : want) {
-      if (have.count({e.mesh, e.v0, e.v1})) continue;
+      if (have.count({e.mesh, e.v0, e.v1}) || !oracle_.edge_ends(e.mesh, e.v0, e.v1)) continue;
       std::string faces;
       for (std::uint32_t f : e.faces) {
         faces += ' ';
@@ -856,6 +897,7 @@ class LineChecker {
       boxes.push_back(b);
     }
     for (const Penetration& pen : penetrations_->found) {
+      if (!oracle_.near().in_front(pen.midpoint)) continue;  // clipped away with its faces
       ++report_.penetrations;
       const VP m = oracle_.basis().to_view(pen.midpoint);
       const P3 mp(m.x, m.y, m.z);

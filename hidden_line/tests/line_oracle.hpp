@@ -71,16 +71,18 @@ using VP = ViewPoint<EK>;
 const char* kind_text(FeatureKind kind);
 
 // The exact, unnormalized view basis: X = d x up, Y = X x d, Z = -d; view coordinates (X.p, Y.p, Z.p).
+// A perspective view from e: q = p - e, w = d.q, view coordinates (X.q / w, Y.q / w, 1 / w).
 class ExactViewBasis {
  public:
   explicit ExactViewBasis(const View& view);
   VP to_view(const P3& p) const;
   VP to_view(const std::array<double, 3>& p) const;
-  // Z = -d in model space (toward the viewer).
-  EK::Vector_3 toward_viewer() const { return {z_[0], z_[1], z_[2]}; }
+  // Toward the viewer from a model point p: Z = -d, or e - p in a perspective view.
+  EK::Vector_3 toward_viewer(const P3& p) const;
 
  private:
   FT x_[3], y_[3], z_[3];
+  std::optional<P3> eye_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -132,6 +134,10 @@ class LineOracle {
   const SceneOracle& surfaces() const { return surfaces_; }
   const ExactViewBasis& basis() const { return basis_; }
   const VP& vertex(std::uint32_t mesh, std::uint32_t v) const { return vertices_[mesh][v]; }
+  const NearPlane& near() const { return near_; }
+  // The ends of a mesh edge's part in front of the near plane, in view coordinates (the vertices'
+  // where nothing is clipped); nothing when it lies wholly behind.
+  std::optional<std::pair<VP, VP>> edge_ends(std::uint32_t mesh, std::uint32_t v0, std::uint32_t v1) const;
   std::size_t non_planar_faces() const { return non_planar_; }
 
   // The point oracle: a face that hides p (strictly nearer at p's image position), if any.
@@ -162,6 +168,7 @@ class LineOracle {
   View view_;
   SceneOracle surfaces_;
   ExactViewBasis basis_;
+  NearPlane near_;
   std::vector<std::vector<VP>> vertices_;
   std::vector<FaceData> faces_;
   std::vector<std::size_t> first_;  // per mesh: index of its first face in faces_

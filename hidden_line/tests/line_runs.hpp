@@ -27,7 +27,7 @@ inline LineRun run_lines(const std::vector<Mesh>& meshes, const View& view, cons
   using clock = std::chrono::steady_clock;
   auto since = [](clock::time_point t) { return std::chrono::duration<double>(clock::now() - t).count(); };
   LineRun out;
-  const ViewFrame<ExactKernel> frame(view);
+  const ViewFrame<ExactKernel> frame(view, meshes);
   hidden_line::SourceOptions source_options;
   source_options.remove_back_faces = remove_back_faces;
   auto t = clock::now();

@@ -105,6 +105,15 @@ RC_GTEST_PROP(LinesProperty, TriangleSoupsSatisfyTheContract, ()) {
   RC_CLASSIFY(report.notes.count("(b) isolated hidden point in a visible piece") > 0, "isolated hidden point");
 }
 
+// The same in perspective: eyes near and inside the soup, faces cut by the near plane.
+RC_GTEST_PROP(LinesProperty, PerspectiveSoupsSatisfyTheContract, ()) {
+  Soup soup = random_soup();
+  soup.view = *gen_perspective_view();
+  const std::vector<Mesh> meshes{to_mesh(soup)};
+  RC_PRE(!perspective_defect(meshes, soup.view));
+  run_and_check_random_options(meshes, soup.view);
+}
+
 // The oracle catches errors planted in a correct LineSet of a random soup: a piece flipped, a
 // split point moved halfway to a neighbouring one, an edge dropped, an edge given another kind.
 RC_GTEST_PROP(LinesProperty, PlantedErrorsAreCaught, ()) {

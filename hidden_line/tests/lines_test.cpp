@@ -138,6 +138,41 @@ TEST(LinesHand, CubeFrontView) {
   run_and_check(meshes, view_named("front"), "cube", {}, false);
 }
 
+// The cube from an eye in front of its front face's centre: in perspective the side faces are
+// back faces (the eye lies on their inner side), not edge-on as in the front view, and the edges
+// along the view, end-on there, now recede to the back face's smaller outline. Everything but the
+// front face's outline is hidden; the front face's edges are silhouettes (decided at the eye).
+TEST(LinesHand, CubeInPerspectiveFromTheFront) {
+  const auto& meshes = fixture("cube.off");
+  View view = view_named("front");
+  view.name = "perspective";
+  view.eye = Vec3{0.5, -2, 0.5};
+  const LineSetX set = run_and_check(meshes, view, "cube");
+  ASSERT_EQ(set.lines.size(), 12u);
+  std::size_t visible = 0, silhouettes = 0;
+  for (const auto& l : set.lines) {
+    ASSERT_EQ(l.pieces.size(), 1u);
+    const bool front = l.a.z == FT(1) / 2 && l.b.z == FT(1) / 2;  // 1/w at y = 0, w = y + 2
+    EXPECT_EQ(l.pieces[0].visible, front) << l.v0 << "-" << l.v1;
+    visible += l.pieces[0].visible;
+    silhouettes += l.kind == FeatureKind::silhouette;
+  }
+  EXPECT_EQ(visible, 4u);
+  EXPECT_EQ(silhouettes, 4u);  // the front outline; the side and back faces all turn away
+  run_and_check(meshes, view, "cube", {}, false);
+}
+
+// An eye inside the cube, looking toward a corner: the near plane cuts the faces that reach
+// behind the eye, so the cube is cut open and its back faces (all of them, seen from inside) are
+// drawn; checked against the oracle, which clips on its own.
+TEST(LinesHand, EyeInsideTheCube) {
+  const auto& meshes = fixture("cube.off");
+  View view = direction_view({0.5, 0.5, 0.5}, {0, 0, 1});
+  view.eye = Vec3{0.25, 0.375, 0.125};
+  run_and_check(meshes, view, "cube from inside");
+  run_and_check(meshes, view, "cube from inside", {}, false);
+}
+
 TEST(LinesHand, TriangleBehindSquareIsSplitExactly) {
   const auto meshes = square_and_triangle();
   const LineSetX set = run_and_check(meshes, view_named("front"), "square and triangle");
@@ -652,6 +687,50 @@ std::vector<FixtureView> fixture_views() {
 INSTANTIATE_TEST_SUITE_P(Fixtures, LineFixtureViews, ::testing::ValuesIn(fixture_views()),
                          [](const auto& info) { return test_name(info.param.file) + "_" + info.param.label; });
 
+// Every fixture in perspective (surface_runs.hpp perspective_view): far, close (strong
+// perspective) and eyes whose near plane cuts the scene. The projective map is exact, so every
+// check of the contract carries over; the oracle clips by the near plane on its own.
+
+struct PerspectiveCase {
+  std::string file;
+  int which = 0;
+};
+void PrintTo(const PerspectiveCase& p, std::ostream* os) { *os << p.file << " perspective " << p.which; }
+
+class LinePerspectiveViews : public ::testing::TestWithParam<PerspectiveCase> {};
+
+TEST_P(LinePerspectiveViews, Contract) {
+  const auto& p = GetParam();
+  const auto& meshes = fixture(p.file);
+  const View view = perspective_view(meshes, p.which);
+  if (const auto defect = perspective_defect(meshes, view)) GTEST_SKIP() << *defect;
+  try {
+    const PenetrationSearch pen = find_penetrations(meshes);
+    const LineSetX set = run_and_check(meshes, view, p.file, {}, true, &pen);
+    run_and_check(meshes, view, p.file, {}, false, &pen);
+    EXPECT_EQ(line_signature(run_lines(reversed_meshes(meshes), view).set), line_signature(set))
+        << p.file << " reversed";
+    hidden_line::AreaSortOptions sort;
+    sort.sources_per_strip = 2;
+    EXPECT_EQ(line_signature(run_lines(meshes, view, {}, true, sort).set), line_signature(set))
+        << p.file << " in strips of 2";
+  } catch (const UserError& e) {
+    // A polygon face that the near plane cuts into several pieces is refused (near_plane.hpp).
+    EXPECT_GE(p.which, 3) << e.what();
+    GTEST_SKIP() << e.what();
+  }
+}
+
+std::vector<PerspectiveCase> perspective_cases() {
+  std::vector<PerspectiveCase> out;
+  for (const auto& file : fixture_files())
+    for (int which = 0; which < kPerspectiveViews; ++which) out.push_back({file, which});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, LinePerspectiveViews, ::testing::ValuesIn(perspective_cases()),
+                         [](const auto& info) { return test_name(info.param.file) + "_" + std::to_string(info.param.which); });
+
 // Meshes as real exporters write them (fixtures/scenes/real_mesh_fixtures.py); the fixture runs
 // above check them against the oracle in every view, these check what they are for.
 
@@ -782,6 +861,40 @@ std::vector<SceneView> scene_views() {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, LineSceneViews, ::testing::ValuesIn(scene_views()),
                          [](const auto& info) { return test_name(info.param.file) + "_" + info.param.view.name; });
+
+// The shared scenes in perspective: a close eye (strong perspective) and one whose near plane cuts
+// the scene.
+class LineScenePerspective : public ::testing::TestWithParam<PerspectiveCase> {};
+
+TEST_P(LineScenePerspective, Contract) {
+  const auto& p = GetParam();
+  if (!shared_scenes_present()) GTEST_SKIP() << "no shared scenes at " << shared_scene_dir();
+  const std::string path = shared_scene_dir() + "/" + p.file;
+  const auto& meshes = scene_meshes(path);
+  const View view = perspective_view(meshes, p.which);
+  if (const auto defect = perspective_defect(meshes, view)) GTEST_SKIP() << *defect;
+  try {
+    LineRun run = run_lines(meshes, view);
+    const LineOracle oracle(meshes, view);
+    const LineReport report = check_lines(oracle, run.set, {}, &scene_penetrations(path));
+    EXPECT_TRUE(report.ok()) << p.file << " view " << view.name << ": " << report.summary();
+  } catch (const UserError& e) {
+    EXPECT_GE(p.which, 3) << e.what();
+    GTEST_SKIP() << e.what();
+  }
+}
+
+std::vector<PerspectiveCase> scene_perspective_cases() {
+  std::vector<PerspectiveCase> out;
+  auto files = shared_scene_files();
+  for (const auto& f : soak_scene_files()) files.push_back(f);
+  for (const auto& file : files)
+    for (int which : {1, 3}) out.push_back({file, which});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, LineScenePerspective, ::testing::ValuesIn(scene_perspective_cases()),
+                         [](const auto& info) { return test_name(info.param.file) + "_" + std::to_string(info.param.which); });
 
 }  // namespace
 }  // namespace hlr::hltest

@@ -75,6 +75,7 @@ inline std::string view_text(const View& v) {
   std::ostringstream out;
   out << v.name << " direction (" << v.direction[0] << ", " << v.direction[1] << ", " << v.direction[2] << ") up ("
       << v.up[0] << ", " << v.up[1] << ", " << v.up[2] << ")";
+  if (v.eye) out << " eye (" << (*v.eye)[0] << ", " << (*v.eye)[1] << ", " << (*v.eye)[2] << ")";
   return out.str();
 }
 
@@ -102,6 +103,23 @@ inline rc::Gen<View> gen_view() {
         return v;
       });
   return rc::gen::oneOf(named, direction);
+}
+
+// A perspective view: an eye on a grid of eighths around and inside the soups' box [0, 4]^3 (so
+// that faces are seen edge-on, from close by, and cut by the near plane), looking at a point
+// inside it. The eye may lie on a face: check perspective_defect.
+inline rc::Gen<View> gen_perspective_view() {
+  auto e = rc::gen::inRange(-3, 8);
+  auto t = rc::gen::inRange(0, 4);
+  return rc::gen::map(rc::gen::tuple(e, e, e, t, t, t), [](const auto& g) {
+    const Vec3 eye{std::get<0>(g) + 0.375, std::get<1>(g) + 0.625, std::get<2>(g) + 0.125};
+    const Vec3 target{std::get<3>(g) + 0.5, std::get<4>(g) + 0.25, std::get<5>(g) + 0.75};
+    View v = direction_view({target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]});
+    if (view_defect(v)) v.up = {0, 1, 0};  // direction along z
+    v.name = "perspective";
+    v.eye = eye;
+    return v;
+  });
 }
 
 // A random soup and view (see the top of this file). Only inside a RapidCheck property.

@@ -155,25 +155,85 @@ CGAL::Bbox_2 interval_box(const P2& p) {
 
 }  // namespace
 
+NearPlane::NearPlane(const std::vector<Mesh>& meshes, const View& view) {
+  if (!view.eye) return;
+  eye_ = P3((*view.eye)[0], (*view.eye)[1], (*view.eye)[2]);
+  d_ = EK::Vector_3(view.direction[0], view.direction[1], view.direction[2]);
+  std::optional<FT> deepest;
+  for (const Mesh& mesh : meshes)
+    for (const auto& v : mesh.vertices) {
+      const FT w = depth(P3(v[0], v[1], v[2]));
+      if (!deepest || w > *deepest) deepest = w;
+    }
+  nu_ = view.near_fraction ? *deepest * FT(*view.near_fraction) : *deepest / 1000;
+}
+
+P3 NearPlane::crossing(const P3& a, const P3& b) const {
+  const EK::Plane_3 plane(*eye_ + d_ * (nu_ / d_.squared_length()), d_);
+  const auto hit = CGAL::intersection(EK::Segment_3(a, b), plane);
+  return *boost::get<P3>(&*hit);  // the segment crosses the plane: a point
+}
+
+std::vector<P3> NearPlane::clip(const std::vector<P3>& polygon) const {
+  if (!eye_) return polygon;
+  std::vector<P3> out;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const P3 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+    const CGAL::Sign sp = CGAL::sign(depth(p) - nu_), sq = CGAL::sign(depth(q) - nu_);
+    if (sp >= 0) out.push_back(p);
+    if (sp * sq < 0) out.push_back(crossing(p, q));
+  }
+  if (out.size() < 3) out.clear();
+  return out;
+}
+
+std::optional<std::pair<P3, P3>> NearPlane::clip(const P3& a, const P3& b) const {
+  const bool fa = in_front(a), fb = in_front(b);
+  if (!fa && !fb) return std::nullopt;
+  if (fa && fb) return std::pair{a, b};
+  const std::pair<P3, P3> part = fa ? std::pair{a, crossing(a, b)} : std::pair{crossing(a, b), b};
+  if (part.first == part.second) return std::nullopt;  // one end on the near plane, the other behind it
+  return part;
+}
+
 SceneOracle::SceneOracle(const std::vector<Mesh>& meshes, const View& view) {
-  const ViewFrame<EK> frame(view);
+  const ViewFrame<EK> frame(view, meshes);
+  const NearPlane near(meshes, view);
   std::size_t live = 0;
   bool first = true;
   for (const Mesh& mesh : meshes) {
-    std::vector<ViewPoint<EK>> vp;
-    vp.reserve(mesh.vertices.size());
-    for (const auto& v : mesh.vertices) vp.push_back(frame.to_view(v));
-    const std::vector<int> sides = closed_sides(mesh);
+    auto model = [&](std::uint32_t v) { return P3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]); };
+    std::vector<ViewPoint<EK>> vp(mesh.vertices.size());  // of the vertices in front of the near plane
+    std::vector<bool> front(mesh.vertices.size());
+    for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v)
+      if ((front[v] = near.in_front(model(v)))) vp[v] = frame.to_view(mesh.vertices[v]);
+    // A mesh that reaches behind the near plane is cut open: no face of it counts as closed.
+    const bool cut_open = std::find(front.begin(), front.end(), false) != front.end();
+    std::vector<int> sides = closed_sides(mesh);
+    if (cut_open) sides.assign(sides.size(), 0);
     std::vector<Face> faces(mesh.faces.size());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-      const auto& idx = mesh.faces[f];
+      // The face's corners in view coordinates: of its part in front of the near plane.
+      std::vector<ViewPoint<EK>> corners;
+      const auto& face = mesh.faces[f];
+      if (std::all_of(face.begin(), face.end(), [&](std::uint32_t v) { return front[v]; })) {
+        for (std::uint32_t v : face) corners.push_back(vp[v]);
+      } else {
+        std::vector<P3> polygon;
+        for (std::uint32_t v : face) polygon.push_back(model(v));
+        for (const P3& p : near.clip(polygon)) corners.push_back(frame.to_view(p.x(), p.y(), p.z()));
+      }
       Face& out = faces[f];
       out.side = sides[f];
       out.closed = sides[f] != 0;
+      if (corners.empty()) {  // wholly behind the near plane: no face of the view
+        out.behind = true;
+        continue;
+      }
       FT nx = 0, ny = 0, nz = 0;
-      for (std::size_t i = 0; i < idx.size(); ++i) {
-        const ViewPoint<EK>& p = vp[idx[i]];
-        const ViewPoint<EK>& q = vp[idx[(i + 1) % idx.size()]];
+      for (std::size_t i = 0; i < corners.size(); ++i) {
+        const ViewPoint<EK>& p = corners[i];
+        const ViewPoint<EK>& q = corners[(i + 1) % corners.size()];
         nx += (p.y - q.y) * (p.z + q.z);
         ny += (p.z - q.z) * (p.x + q.x);
         nz += (p.x - q.x) * (p.y + q.y);
@@ -184,7 +244,7 @@ SceneOracle::SceneOracle(const std::vector<Mesh>& meshes, const View& view) {
       out.box = interval_box(out.points[0]);
       for (const P2& p : out.points) out.box += interval_box(p);
       if (out.facing != 0) {
-        const ViewPoint<EK>& v0 = vp[idx[0]];
+        const ViewPoint<EK>& v0 = corners[0];
         out.plane = {-nx / nz, -ny / nz, (nx * v0.x + ny * v0.y + nz * v0.z) / nz};
         ++live;
         extent_ = first ? out.box : extent_ + out.box;

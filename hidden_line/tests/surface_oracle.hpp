@@ -16,6 +16,7 @@
 #include <hlr/kernel/view.hpp>
 
 #include <CGAL/Bbox_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <cstdint>
 #include <optional>
@@ -28,6 +29,7 @@ namespace hlr::hltest {
 using EK = ExactKernel;
 using FT = EK::FT;
 using P2 = EK::Point_2;
+using P3 = EK::Point_3;
 
 // z = a x + b y + c in the exact, unnormalized view frame.
 struct Plane {
@@ -59,6 +61,29 @@ std::optional<P2> interior_point(const std::vector<P2>& outer, const std::vector
 // Strictly inside outer and strictly outside every hole?
 bool strictly_inside(const std::vector<P2>& outer, const std::vector<std::vector<P2>>& holes, const P2& q);
 
+// The near plane of a perspective view, as DESIGN.md defines it, for the oracles: depth
+// d.(p - e), nu = (1/1000 or the view's fraction) x the largest depth of a vertex, and faces and
+// segments clipped to depth >= nu with CGAL's own plane intersections (the engine interpolates).
+// For an orthographic view nothing is clipped.
+class NearPlane {
+ public:
+  NearPlane(const std::vector<Mesh>& meshes, const View& view);
+  bool perspective() const { return eye_.has_value(); }
+  bool in_front(const P3& p) const { return !eye_ || depth(p) >= nu_; }
+  // Sutherland-Hodgman on the face's corners (they are convex or cut at most twice in the tests);
+  // empty when fewer than three corners remain.
+  std::vector<P3> clip(const std::vector<P3>& polygon) const;
+  // A segment's part in front; nothing when no more than a point of it is.
+  std::optional<std::pair<P3, P3>> clip(const P3& a, const P3& b) const;
+
+ private:
+  FT depth(const P3& p) const { return (p - *eye_) * d_; }
+  P3 crossing(const P3& a, const P3& b) const;
+  std::optional<P3> eye_;
+  EK::Vector_3 d_;
+  FT nu_;
+};
+
 class SceneOracle {
  public:
   SceneOracle(const std::vector<Mesh>& meshes, const View& view);
@@ -67,6 +92,7 @@ class SceneOracle {
     std::vector<P2> points;  // projected corners, in the face's order
     Plane plane;             // only when facing != 0
     int facing = 0;          // sign of the projected area: +1 toward the viewer, -1 away, 0 edge-on
+    bool behind = false;     // perspective: wholly behind the near plane (then facing is 0, no points)
     FT twice_projected_area;  // signed
     bool closed = false;      // in a closed, consistently oriented component that encloses volume
     int side = 0;             // closed: +1 outward, -1 inward (its back faces are the front-wound ones)

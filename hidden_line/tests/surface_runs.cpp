@@ -1,5 +1,6 @@
 #include "surface_runs.hpp"
 
+#include <cmath>
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -56,6 +57,35 @@ View direction_view(const Vec3& direction, const Vec3& up) {
   return v;
 }
 
+View perspective_view(const std::vector<Mesh>& meshes, int which) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const Mesh& m : meshes)
+    for (const auto& v : m.vertices)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+  double c[3], r2 = 0;
+  for (int k = 0; k < 3; ++k) {
+    c[k] = (lo[k] + hi[k]) / 2;
+    r2 += (hi[k] - lo[k]) * (hi[k] - lo[k]) / 4;
+  }
+  const double r = std::max(std::sqrt(r2), 1e-3);
+  static const char* names[kPerspectiveViews] = {"persp_far", "persp_close", "persp_close2", "persp_near", "persp_inside"};
+  static const double along[kPerspectiveViews][3] = {
+      {0.62, -0.71, 0.33}, {-0.53, -0.64, 0.56}, {0.28, 0.81, -0.51}, {0.62, -0.71, 0.33}, {-0.53, -0.64, 0.56}};
+  static const double distance[kPerspectiveViews] = {3.1, 1.27, 1.13, 0.55, 0.17};
+  View v;
+  v.name = names[which];
+  Vec3 eye, target;
+  for (int k = 0; k < 3; ++k) {
+    eye[k] = c[k] + distance[which] * r * along[which][k];
+    // The eye inside looks away from the centre's far side, past it.
+    target[k] = which == 4 ? c[k] - r * along[2][k] : c[k];
+    v.direction[k] = target[k] - eye[k];
+  }
+  v.eye = eye;
+  v.up = {0, 0, 1};
+  return v;
+}
+
 const std::vector<Mesh>& scene_meshes(const std::string& path) {
   static std::mutex mutex;
   static std::map<std::string, std::vector<Mesh>> cache;
@@ -81,7 +111,7 @@ Solved solve(const std::vector<Mesh>& meshes, const View& view, const hidden_lin
              const hidden_line::AreaSortOptions& sort) {
   using clock = std::chrono::steady_clock;
   Solved out;
-  const ViewFrame<K> frame(view);
+  const ViewFrame<K> frame(view, meshes);
   auto t0 = clock::now();
   auto sources = hidden_line::build_sources<K>(meshes, frame, options);
   auto t1 = clock::now();

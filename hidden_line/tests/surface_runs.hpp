@@ -31,6 +31,13 @@ std::vector<std::string> soak_scene_files();
 std::vector<View> named_views();
 View direction_view(const Vec3& direction, const Vec3& up = {0, 0, 1});
 
+// Perspective views of a scene, from eyes placed by its bounding sphere (centre c, radius r):
+// "persp_far" (3.1 r from c), "persp_close" and "persp_close2" (1.27 r and 1.13 r: strong
+// perspective, nothing behind the near plane), "persp_near" (0.55 r from c, looking at c: the
+// near plane cuts the scene) and "persp_inside" (an eye inside, looking past the centre).
+inline constexpr int kPerspectiveViews = 5;
+View perspective_view(const std::vector<Mesh>& meshes, int which);
+
 // One mesh file as the only mesh of a scene; loaded once per process.
 const std::vector<Mesh>& scene_meshes(const std::string& path);
 

@@ -57,22 +57,29 @@ class FaceNormals {
   using IA = CGAL::Interval_nt<false>;
   using FT = EK::FT;
 
+  // Facing: the sign of n·t with t toward the viewer: −d in an orthographic view; in a
+  // perspective one e − p for a corner p, so that the face faces the viewer exactly when the eye
+  // lies on its front side.
   FaceNormals(const Mesh& mesh, const View& view) : mesh_(mesh), approx_(mesh.faces.size()), exact_(mesh.faces.size()) {
     facing_.resize(mesh.faces.size());
     const double toward_viewer[3] = {-view.direction[0], -view.direction[1], -view.direction[2]};
+    auto toward = [&]<class NT>(std::size_t f, NT) -> std::array<NT, 3> {
+      if (!view.eye) return {NT(toward_viewer[0]), NT(toward_viewer[1]), NT(toward_viewer[2])};
+      const auto& p = mesh.vertices[mesh.faces[f][0]];
+      const Vec3& e = *view.eye;
+      return {NT(e[0]) - NT(p[0]), NT(e[1]) - NT(p[1]), NT(e[2]) - NT(p[2])};
+    };
     std::vector<std::size_t> undecided;
     {
       CGAL::Protect_FPU_rounding<true> protect;
-      const std::array<IA, 3> d{IA(toward_viewer[0]), IA(toward_viewer[1]), IA(toward_viewer[2])};
       for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         approx_[f] = face_normal<IA>(mesh, mesh.faces[f]);
-        const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(dot(approx_[f], d));
+        const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(dot(approx_[f], toward(f, IA())));
         if (CGAL::is_certain(sign)) facing_[f] = CGAL::get_certain(sign);
         else undecided.push_back(f);
       }
     }
-    const std::array<FT, 3> d{FT(toward_viewer[0]), FT(toward_viewer[1]), FT(toward_viewer[2])};
-    for (std::size_t f : undecided) facing_[f] = CGAL::sign(dot(exact(f), d));
+    for (std::size_t f : undecided) facing_[f] = CGAL::sign(dot(exact(f), toward(f, FT())));
   }
 
   int facing(std::size_t f) const { return facing_[f]; }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -811,6 +812,104 @@ TEST_F(CliDraw, BadOptionsAreUsageErrors) {
     args.insert(args.end(), bad.begin(), bad.end());
     expect_failure(args, 2, "");
   }
+}
+
+// Perspective views (--eye with --target or --dir).
+
+// The written coordinates of a model point: world_to_view applied to (x, y, z, 1), divided by the
+// fourth component (docs/FORMATS.md).
+std::array<double, 3> perspective_point(const json& view, const std::array<double, 3>& p) {
+  double h[4];
+  for (int r = 0; r < 4; ++r) {
+    const auto& row = view.at("world_to_view").at(r);
+    h[r] = row.at(0).get<double>() * p[0] + row.at(1).get<double>() * p[1] + row.at(2).get<double>() * p[2] +
+           row.at(3).get<double>();
+  }
+  return {h[0] / h[3], h[1] / h[3], h[2] / h[3]};
+}
+
+TEST_F(CliDraw, PerspectiveViewWritesItsProjectiveMap) {
+  const std::string mesh = (kScenes / "cube.off").string();
+  Outcome run = hlr({"draw", mesh, "--eye", "3,-4,2.5", "--target", "0.5,0.5,0.5", "-o", out("p.json").string(), "-o",
+                     out("p.svg").string(), "-o", out("p.dxf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const json doc = json::parse(slurp(out("p.json")));
+  const json& view = doc.at("view");
+  EXPECT_EQ(view.at("projection"), "perspective");
+  EXPECT_EQ(view.at("eye"), json({3, -4, 2.5}));
+  EXPECT_EQ(view.at("direction"), json({-2.5, 4.5, -2}));
+  EXPECT_EQ(view.at("world_to_view").at(2), json({0, 0, 0, 1}));
+  // Every line end is the image of a cube corner, by the matrix as FORMATS.md says to apply it.
+  std::vector<std::array<double, 3>> corners;
+  for (double x : {0, 1})
+    for (double y : {0, 1})
+      for (double z : {0, 1}) corners.push_back(perspective_point(view, {x, y, z}));
+  std::size_t ends = 0;
+  for (const auto& line : doc.at("lines"))
+    for (const char* end : {"a", "b"}) {
+      const auto p = line.at(end).get<std::array<double, 3>>();
+      ++ends;
+      for (const auto& c : corners)
+        if (std::abs(c[0] - p[0]) < 1e-12 && std::abs(c[1] - p[1]) < 1e-12 && std::abs(c[2] - p[2]) < 1e-12) {
+          --ends;
+          break;
+        }
+    }
+  EXPECT_GT(doc.at("lines").size(), 8u);
+  EXPECT_EQ(ends, 0u) << "line ends that are no corner's image";
+  // Three faces toward the eye: their nine edges visible, the other three hidden.
+  std::size_t visible = 0;
+  for (const auto& line : doc.at("lines")) visible += line.at("visible").get<bool>();
+  EXPECT_EQ(visible, 9u);
+  EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"p.dxf", "p.json", "p.svg"}));
+  // The same view as --dir, and through hlr surfaces and hlr check.
+  Outcome dir = hlr({"draw", mesh, "--eye", "3,-4,2.5", "--dir", "-2.5,4.5,-2", "-o", out("d.json").string()});
+  ASSERT_EQ(dir.exit_code, 0) << dir.err;
+  EXPECT_EQ(json::parse(slurp(out("d.json"))).at("lines"), doc.at("lines"));
+  Outcome surfaces = hlr({"surfaces", mesh, "--eye", "3,-4,2.5", "--target", "0.5,0.5,0.5", "-o", out("s.json").string()});
+  ASSERT_EQ(surfaces.exit_code, 0) << surfaces.err;
+  EXPECT_EQ(json::parse(slurp(out("s.json"))).at("view").at("projection"), "perspective");
+  Outcome check = hlr({"check", mesh, "--eye", "3,-4,2.5", "--target", "0.5,0.5,0.5", "--raster", "256"});
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+}
+
+TEST_F(CliDraw, PerspectiveNearPlaneCutsTheScene) {
+  // The eye between the bracket's arms, looking along the upper one: the near plane cuts the faces
+  // of the lower arm that reach behind the eye. The cut draws no line; every line end lies in front.
+  const std::string mesh = (kScenes / "l_bracket.off").string();
+  for (const std::string& out_name : {"n.json", "n.svg", "n.dxf"}) {
+    Outcome run = hlr({"draw", mesh, "--eye", "2.1,1.3,2.2", "--target", "0.2,1.0,2.5", "--near", "0.01", "-o",
+                       out(out_name).string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  const json doc = json::parse(slurp(out("n.json")));
+  EXPECT_FALSE(doc.at("lines").empty());
+  for (const auto& line : doc.at("lines"))
+    for (const char* end : {"a", "b"}) EXPECT_GT(line.at(end).at(2).get<double>(), 0) << line;
+  Outcome raster = hlr({"draw", mesh, "--eye", "2.1,1.3,2.2", "--target", "0.2,1.0,2.5", "--raster", "128", "-o",
+                        out("n.png").string()});
+  EXPECT_EQ(raster.exit_code, 0) << raster.err;
+}
+
+TEST_F(CliDraw, BadPerspectiveViewsGiveOneLineAndNoFile) {
+  const std::string cube = (kScenes / "cube.off").string();
+  const std::string o = out("c.json").string();
+  auto bad = [&](std::vector<std::string> extra, const std::string& prefix) {
+    std::vector<std::string> args{cube, "-o", o};
+    args.insert(args.end(), extra.begin(), extra.end());
+    expect_failure(args, 2, prefix);
+  };
+  bad({"--eye", "1,2,3", "--target", "1,2,3"}, "hlr: --eye/--target: the eye is at the target");
+  bad({"--eye", "0.5,0.5,0", "--target", "0.5,0.5,3"}, "hlr: --eye 0.5,0.5,0: the eye lies on face 0 of ");
+  bad({"--eye", "0.5,0.5,10", "--dir", "0,0,1"}, "hlr: --eye 0.5,0.5,10: the whole scene is behind the eye");
+  bad({"--eye", "inf,0,0", "--target", "0,0,0"}, "hlr: --eye/--target: eye is not finite");
+  bad({"--eye", "3,3,3", "--target", "0,0,nan"}, "hlr: --eye/--target: target is not finite");
+  bad({"--eye", "3,3,3"}, "hlr: --eye: give --target");
+  bad({"--eye", "3,3,3", "--target", "0,0,0", "--near", "1"}, "hlr: --near:");
+  bad({"--eye", "3,3,3", "--target", "0,0,0", "--view", "front"}, "");
+  bad({"--eye", "3,3,3", "--target", "0,0,0", "--sun", "1,1,-1"}, "hlr: --sun is not supported with --eye yet");
+  expect_failed_run({"sheet", cube, "--eye", "3,3,3", "-o", out("s.svg").string()}, 2,
+                    "hlr: --eye is not supported by hlr sheet yet");
 }
 
 TEST_F(CliDraw, BadMeshesAndOutputsGiveOneLineAndNoFile) {

@@ -24,11 +24,12 @@ struct ViewInfo {
   std::string name;  // "front", ..., "custom"
   std::array<double, 3> direction{}, up{};
   std::array<std::array<double, 4>, 4> world_to_view{};
+  std::optional<std::array<double, 3>> eye;  // a perspective view's
 };
 template <class K>
 ViewInfo view_info(const ViewFrame<K>& frame) {
   const View& v = frame.view();
-  return {v.name, v.direction, v.up, frame.world_to_view()};
+  return {v.name, v.direction, v.up, frame.world_to_view(), v.eye};
 }
 
 using hidden_line::StageTimes;

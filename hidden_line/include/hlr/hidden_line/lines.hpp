@@ -23,6 +23,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace hlr::hidden_line {
@@ -56,7 +57,8 @@ struct FeatureLine {
   std::uint32_t v0 = 0, v1 = 0;  // the mesh edge's input vertices; unused for intersections
   std::vector<LinePiece<K>> pieces;  // empty when the line projects to a point
   double meeting_degrees = 90;       // intersections: IntersectionSegment::meeting_degrees
-  // Mesh edges: the ends' input coordinates, for predicates decided on them (view_predicates.hpp).
+  // Mesh edges: the ends' input coordinates, for predicates decided on them (view_predicates.hpp);
+  // not where the near plane of a perspective view cuts the edge (an end is then constructed).
   bool has_model_ends = false;
   Vec3 model_a{}, model_b{};
 };
@@ -73,6 +75,7 @@ struct LineSet {
   std::vector<FeatureLine<K>> lines;
   LineStats stats;
   Vec3 view_direction{0, 0, -1};  // of the view the lines were classified in
+  std::optional<Vec3> view_eye;   // and its eye, when it is a perspective view
 };
 
 struct LineOptions {

@@ -20,6 +20,7 @@
 
 #include <hlr/clipper/clipper.hpp>
 #include <hlr/kernel/errors.hpp>
+#include <hlr/kernel/near_plane.hpp>
 #include <hlr/kernel/scene.hpp>
 #include <hlr/kernel/view.hpp>
 
@@ -56,6 +57,7 @@ struct SourceStats {
   std::size_t faces = 0;
   std::size_t back_faces_removed = 0;
   std::size_t edge_on_faces_removed = 0;
+  std::size_t faces_behind_eye = 0;  // perspective: wholly behind the near plane
   std::size_t faces_consolidated = 0;  // faces merged into a polygon with other faces
   std::size_t sources = 0;
   std::size_t closed_components = 0, open_components = 0;
@@ -69,11 +71,16 @@ struct Sources {
   std::vector<LineOrigin> line_origins;  // parallel to lines
   // (mesh, v0, v1) of the edges of the faces dropped edge-on that can cover a line: each edge
   // once, and with `consolidate` not the edges between two of a region's coplanar triangles (the
-  // region covers what its boundary covers).
+  // region covers what its boundary covers). v0, v1 index view_points: in a perspective view an
+  // end behind the near plane is replaced by the edge's crossing with it, and a clipped face's
+  // cut is one more edge.
   std::vector<std::array<std::uint32_t, 3>> edge_on_edges;
   std::vector<std::vector<ViewPoint<K>>> view_points;        // per mesh, per input vertex
   std::vector<std::vector<typename Geometry<K>::Point>> image_points;  // the same, projected: the
                                                              // points every source corner shares
+  // Per mesh: what the near plane clips (perspective; view_points then go on with the points where
+  // edges cross it, and those behind it are unused).
+  std::vector<NearCut<K>> near_cuts;
   // Per mesh, (edge_key(v0, v1), line) for every mesh edge's support line, sorted by key.
   std::vector<std::vector<std::pair<std::uint64_t, clip::LineId>>> edge_lines;
   SourceStats stats;

@@ -5,15 +5,26 @@
 // so planar faces stay planar and coplanar faces coplanar in every view; they differ from the
 // orthonormal frame only by a positive scale per axis (|X|, |Y|, |Z|), applied when writing output.
 // On Epick and double the same formulas run in double, which is what makes those kernels inexact.
+//
+// A perspective view (View::eye) maps p to (x/w, y/w, 1/w) with x = X·(p−e), y = Y·(p−e),
+// w = d·(p−e) (DESIGN.md "Perspective"). The map is projective: planes stay planes, lines stay
+// lines, and a larger third coordinate is nearer along each ray from the eye, so everything after
+// the frame runs unchanged on these coordinates. Only points in front of the near plane
+// w >= near() may be mapped: near_plane.hpp clips the faces and edges that reach behind it.
 #pragma once
 
 #include <hlr/kernel/kernel.hpp>
+#include <hlr/kernel/scene.hpp>
 
 #include <array>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <vector>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 
 namespace hlr {
 
@@ -23,6 +34,11 @@ struct View {
   std::string name;  // "front", ..., or "custom"
   Vec3 direction{0, 0, -1};
   Vec3 up{0, 1, 0};
+  // Perspective from this point (looking along `direction`); none: orthographic.
+  std::optional<Vec3> eye;
+  // Perspective: the near plane at this fraction of the largest depth d·(p−e) of the scene's
+  // vertices, taken as the exact double; none: exactly 1/1000.
+  std::optional<double> near_fraction;
 };
 
 // The named views of DESIGN.md for Z-up models; false for an unknown name.
@@ -38,7 +54,7 @@ inline bool named_view(std::string_view name, View& view) {
   };
   for (const auto& e : table) {
     if (name == e.name) {
-      view = {e.name, e.direction, e.up};
+      view = View{e.name, e.direction, e.up, std::nullopt, std::nullopt};
       return true;
     }
   }
@@ -54,6 +70,10 @@ inline std::optional<std::string> view_defect(const View& v) {
     if (!std::isfinite(c)) return "view direction is not finite";
   for (double c : v.up)
     if (!std::isfinite(c)) return "up vector is not finite";
+  if (v.eye)
+    for (double c : *v.eye)
+      if (!std::isfinite(c)) return "eye is not finite";
+  if (v.near_fraction && !(*v.near_fraction > 0 && *v.near_fraction < 1)) return "near fraction is not in (0, 1)";
   if (v.direction == Vec3{0, 0, 0}) return "view direction is zero";
   if (v.up == Vec3{0, 0, 0}) return "up vector is zero";
   using FT = ExactKernel::FT;
@@ -76,7 +96,30 @@ class ViewFrame {
  public:
   using FT = typename Geometry<K>::FT;
 
+  // An orthographic view (a perspective one needs its scene: the near plane depends on it).
   explicit ViewFrame(const View& view) : view_(view) {
+    if (view.eye) throw std::invalid_argument("a perspective frame needs its scene");
+    make_basis();
+  }
+  // Any view of these meshes. Perspective: the scene must have a vertex in front of the eye
+  // (perspective_defect in near_plane.hpp says so first).
+  ViewFrame(const View& view, const std::vector<Mesh>& meshes) : view_(view) {
+    make_basis();
+    if (view.eye) fit_near(meshes);
+  }
+
+  bool perspective() const { return view_.eye.has_value(); }
+  // Perspective: d·(p−e), the depth of a model point along the (unnormalized) look direction.
+  FT eye_depth(const FT& px, const FT& py, const FT& pz) const {
+    return d_[0] * (px - e_[0]) + d_[1] * (py - e_[1]) + d_[2] * (pz - e_[2]);
+  }
+  FT eye_depth(const Vec3& p) const { return eye_depth(FT(p[0]), FT(p[1]), FT(p[2])); }
+  // Perspective: ν, the depth of the near plane; what lies at a smaller depth is clipped away.
+  const FT& near() const { return near_; }
+
+ private:
+  void make_basis() {
+    const View& view = view_;
     const FT d[3] = {FT(view.direction[0]), FT(view.direction[1]), FT(view.direction[2])};
     const FT u[3] = {FT(view.up[0]), FT(view.up[1]), FT(view.up[2])};
     cross(d, u, x_);
@@ -90,13 +133,43 @@ class ViewFrame {
       for (int k = 0; k < 3; ++k) sq += CGAL::to_double(axis[k]) * CGAL::to_double(axis[k]);
       scale_[i] = std::sqrt(sq);
     }
+    if (view.eye) {
+      // Written coordinates are (x̂/ŵ, ŷ/ŵ, 1/ŵ): x/w times |d|/|X|, y/w times |d|/|Y|, 1/w times |d|.
+      const double length_d = scale_[2];
+      scale_[0] /= length_d;
+      scale_[1] /= length_d;
+      scale_[2] = 1 / length_d;
+      for (int k = 0; k < 3; ++k) {
+        d_[k] = d[k];
+        e_[k] = FT((*view.eye)[k]);
+      }
+    }
   }
+  // ν = fraction · the largest depth over the vertices, exact.
+  void fit_near(const std::vector<Mesh>& meshes) {
+    std::optional<FT> deepest;
+    for (const Mesh& mesh : meshes)
+      for (const Vec3& p : mesh.vertices) {
+        const FT w = eye_depth(p);
+        if (!deepest || *deepest < w) deepest = w;
+      }
+    if (!deepest || !CGAL::is_positive(*deepest)) throw std::invalid_argument("the whole scene is behind the eye");
+    near_ = view_.near_fraction ? *deepest * FT(*view_.near_fraction) : *deepest / FT(1000);
+  }
+
+ public:
 
   ViewPoint<K> to_view(const Vec3& p) const { return to_view(FT(p[0]), FT(p[1]), FT(p[2])); }
   // A model-space point given in the kernel's number type (a constructed point, on ExactKernel).
+  // Perspective: the point must lie in front of the near plane (eye_depth >= near()).
   ViewPoint<K> to_view(const FT& px, const FT& py, const FT& pz) const {
-    const FT q[3] = {px, py, pz};
-    return {dot(0, q), dot(1, q), dot(2, q)};
+    if (!view_.eye) {
+      const FT q[3] = {px, py, pz};
+      return {dot(0, q), dot(1, q), dot(2, q)};
+    }
+    const FT q[3] = {px - e_[0], py - e_[1], pz - e_[2]};
+    const FT w = -dot(2, q);  // Z = −d
+    return {dot(0, q) / w, dot(1, q) / w, FT(1) / w};
   }
 
   // An exact model-space point (a constructed one: a penetration line's end). The inexact
@@ -104,6 +177,33 @@ class ViewFrame {
   ViewPoint<K> to_view(const ExactKernel::Point_3& p) const {
     if constexpr (std::is_same_v<FT, ExactKernel::FT>) return to_view(p.x(), p.y(), p.z());
     else return to_view(Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+  }
+
+  // A model-space segment's part in front of the near plane, in view coordinates (the whole
+  // segment in an orthographic view); nothing when it lies wholly behind it. Its ends keep their
+  // order.
+  std::optional<std::pair<ViewPoint<K>, ViewPoint<K>>> to_view_clipped(const ExactKernel::Point_3& a,
+                                                                      const ExactKernel::Point_3& b) const {
+    if (!view_.eye) return std::pair{to_view(a), to_view(b)};
+    auto coordinates = [](const ExactKernel::Point_3& p) -> std::array<FT, 3> {
+      if constexpr (std::is_same_v<FT, ExactKernel::FT>) return {p.x(), p.y(), p.z()};
+      else return {FT(CGAL::to_double(p.x())), FT(CGAL::to_double(p.y())), FT(CGAL::to_double(p.z()))};
+    };
+    std::array<FT, 3> p = coordinates(a), q = coordinates(b);
+    const FT wp = eye_depth(p[0], p[1], p[2]), wq = eye_depth(q[0], q[1], q[2]);
+    const bool p_behind = wp < near_, q_behind = wq < near_;
+    if (p_behind && q_behind) return std::nullopt;
+    if (p_behind || q_behind) {
+      // The crossing, from the end in front (as near_plane.hpp makes them).
+      const std::array<FT, 3>& front = p_behind ? q : p;
+      const std::array<FT, 3>& back = p_behind ? p : q;
+      const FT wf = p_behind ? wq : wp, wb = p_behind ? wp : wq;
+      const FT t = (wf - near_) / (wf - wb);
+      std::array<FT, 3> c;
+      for (int k = 0; k < 3; ++k) c[k] = front[k] + t * (back[k] - front[k]);
+      (p_behind ? p : q) = c;
+    }
+    return std::pair{to_view(p[0], p[1], p[2]), to_view(q[0], q[1], q[2])};
   }
 
   // |X|, |Y|, |Z| in double: divide a view coordinate by these to get model units.
@@ -114,14 +214,39 @@ class ViewFrame {
   double rounded(const FT& value, int axis) const { return Geometry<K>::to_double(value) / scale_[axis] + 0.0; }
   const View& view() const { return view_; }
 
-  // The orthonormal frame in double, row-major 4x4 (the JSON's world_to_view).
+  // The orthonormal frame in double, row-major 4x4 (the JSON's world_to_view). Perspective:
+  // rows [X̂, −X̂·e], [Ŷ, −Ŷ·e], [0, 0, 0, 1], [d̂, −d̂·e], so that a model point as the column
+  // (x, y, z, 1), divided by the fourth component of its image, gives the written coordinates.
   std::array<std::array<double, 4>, 4> world_to_view() const {
     std::array<std::array<double, 4>, 4> m{};
+    if (!view_.eye) {
+      for (int i = 0; i < 3; ++i) {
+        const FT* axis = i == 0 ? x_ : i == 1 ? y_ : z_;
+        for (int k = 0; k < 3; ++k) m[i][k] = CGAL::to_double(axis[k]) / scale_[i] + 0.0;  // + 0.0: no -0
+      }
+      m[3][3] = 1;
+      return m;
+    }
+    const Vec3& e = *view_.eye;
+    double length[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      length[0] += CGAL::to_double(x_[k]) * CGAL::to_double(x_[k]);
+      length[1] += CGAL::to_double(y_[k]) * CGAL::to_double(y_[k]);
+      length[2] += CGAL::to_double(z_[k]) * CGAL::to_double(z_[k]);
+    }
+    const int row_of_axis[3] = {0, 1, 3};
     for (int i = 0; i < 3; ++i) {
       const FT* axis = i == 0 ? x_ : i == 1 ? y_ : z_;
-      for (int k = 0; k < 3; ++k) m[i][k] = CGAL::to_double(axis[k]) / scale_[i] + 0.0;  // + 0.0: no -0
+      const double sign = i == 2 ? -1 : 1;  // the last row is d̂ = −Ẑ
+      double offset = 0;
+      auto& row = m[row_of_axis[i]];
+      for (int k = 0; k < 3; ++k) {
+        row[k] = sign * CGAL::to_double(axis[k]) / std::sqrt(length[i]) + 0.0;
+        offset -= row[k] * e[k];
+      }
+      row[3] = offset + 0.0;
     }
-    m[3][3] = 1;
+    m[2][3] = 1;
     return m;
   }
 
@@ -148,6 +273,7 @@ class ViewFrame {
 
   View view_;
   FT x_[3], y_[3], z_[3];
+  FT d_[3], e_[3], near_;  // perspective: the direction, the eye, ν
   int coefficient_[3][3];  // per axis and component: 0, 1 or -1 when the coefficient is that, else 2
   double scale_[3];
 };

@@ -100,8 +100,8 @@ std::string paint_drawing(std::unique_ptr<detail::Canvas> canvas, const LineDraw
   return canvas->finish();
 }
 
-std::string sheet_title(const DrawingStyle& style, const SheetLines& lines) {
-  return "hlr drawing, " + style.sheet.name + ", " + scale_label(lines.scale / style.unit_mm);
+std::string sheet_title(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& lines) {
+  return "hlr drawing, " + style.sheet.name + ", " + drawing_scale_label(drawing, lines.scale / style.unit_mm);
 }
 
 }  // namespace
@@ -134,12 +134,12 @@ double LineDrawing::length(bool visible) const {
 }
 
 std::string lines_svg(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& lines) {
-  return paint_drawing(detail::svg_canvas(style.sheet.width_mm, style.sheet.height_mm, sheet_title(style, lines)),
+  return paint_drawing(detail::svg_canvas(style.sheet.width_mm, style.sheet.height_mm, sheet_title(drawing, style, lines)),
                        drawing, style, lines);
 }
 
 std::string lines_pdf(const LineDrawing& drawing, const DrawingStyle& style, const SheetLines& lines) {
-  return paint_drawing(detail::pdf_canvas(style.sheet.width_mm, style.sheet.height_mm, sheet_title(style, lines)),
+  return paint_drawing(detail::pdf_canvas(style.sheet.width_mm, style.sheet.height_mm, sheet_title(drawing, style, lines)),
                        drawing, style, lines);
 }
 

@@ -130,7 +130,7 @@ void paint_draw_title(Canvas& c, const LineDrawing& drawing, const SheetFrame& l
   c.begin(text);
   cell(c, t.x0, t.y0, t.width(), "Files", files);
   cell(c, t.x0, t.y0 + row, view_width, "View", view);
-  cell(c, t.x0 + view_width, t.y0 + row, scale_width, "Scale", scale_label(ratio));
+  cell(c, t.x0 + view_width, t.y0 + row, scale_width, "Scale", drawing_scale_label(drawing, ratio));
   cell(c, t.x0 + view_width + scale_width, t.y0 + row, t.width() - view_width - scale_width, "Drawn by",
        drawing.raster ? "hlr, raster " + std::to_string(drawing.raster->resolution) + " px" : std::string("hlr"));
   c.end();

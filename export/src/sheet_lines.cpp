@@ -104,6 +104,12 @@ std::string scale_label(double ratio) {
   return ratio >= 1 ? fixed(ratio, 4) + ":1" : "1:" + fixed(1 / ratio, 4);
 }
 
+std::string drawing_scale_label(const LineDrawing& drawing, double ratio) {
+  // A perspective image has no one scale: its coordinates are at focal length 1, and sizes on the
+  // sheet shrink with distance.
+  return drawing.view.eye ? "NTS (perspective)" : scale_label(ratio);
+}
+
 double drawing_scale(const LineDrawing& drawing, const DrawingStyle& style) {
   if (style.scale) return *style.scale;
   const auto bounds = drawn_bounds(drawing, style);

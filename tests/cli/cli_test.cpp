@@ -862,6 +862,8 @@ TEST_F(CliDraw, PerspectiveViewWritesItsProjectiveMap) {
   for (const auto& line : doc.at("lines")) visible += line.at("visible").get<bool>();
   EXPECT_EQ(visible, 9u);
   EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"p.dxf", "p.json", "p.svg"}));
+  // A perspective image has no one scale, and its title block says so.
+  EXPECT_NE(slurp(out("p.svg")).find("NTS (perspective)"), std::string::npos);
   // The same view as --dir, and through hlr surfaces and hlr check.
   Outcome dir = hlr({"draw", mesh, "--eye", "3,-4,2.5", "--dir", "-2.5,4.5,-2", "-o", out("d.json").string()});
   ASSERT_EQ(dir.exit_code, 0) << dir.err;

@@ -162,6 +162,8 @@ double iso_scale_at_most(double ratio);
 bool is_iso_scale(double ratio);
 // "1:5", "2:1", "1:2.5": a ratio of sheet to part.
 std::string scale_label(double ratio);
+// What a drawing's title block says of its scale: scale_label, or "NTS (perspective)".
+std::string drawing_scale_label(const LineDrawing& drawing, double ratio);
 
 // The scale a drawing is made at: style.scale, or the largest ISO 5455 scale (1:1, 1:2, 1:5, ...,
 // 2:1, 5:1, ...) at which the drawing fits the sheet's drawing area (times style.unit_mm).

@@ -6,7 +6,6 @@
 #include <tbb/global_control.h>
 #include <tbb/task_group.h>
 
-#include <exception>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -23,14 +22,14 @@ hidden_line::LineOptions line_options(const DrawOptions& options) {
   return lines;
 }
 
-// Releases `owned` instead of freeing it when an exception (a stop) leaves the scope and `enabled`.
+// With DrawOptions::free_at_exit, releases `owned` instead of freeing it however the scope is
+// left: at the end of the job or by an exception (a stop, which freeing would delay by seconds).
 template <class T>
-struct LeftToExitOnStop {
+struct LeftToExit {
   std::unique_ptr<T>& owned;
   bool enabled;
-  int exceptions = std::uncaught_exceptions();
-  ~LeftToExitOnStop() {
-    if (enabled && std::uncaught_exceptions() > exceptions) (void)owned.release();  // not a leak: the process ends
+  ~LeftToExit() {
+    if (enabled) (void)owned.release();  // not a leak: the process ends
   }
 };
 
@@ -51,9 +50,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   const ViewFrame<K> frame(view, scene.meshes);
   StageTimes times;
   auto solution = std::make_unique<Solution<K>>();
-  // A stopped run in a process that ends with it leaves the solution to the exit as well: freeing
-  // millions of exact nodes would delay the stop by seconds on a large scene.
-  const LeftToExitOnStop<Solution<K>> on_stop{solution, options.free_at_exit};
+  const LeftToExit<Solution<K>> left_to_exit{solution, options.free_at_exit};
   const auto begin = std::chrono::steady_clock::now();
   const bool found_before = intersections.found();
   // Beside the polygon stages when a second thread is free. Otherwise first: on a small scene,
@@ -133,8 +130,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   mark = std::chrono::steady_clock::now();
   LineDrawing drawing =
       make_drawing<K>(scene.input, frame, kernel_kind_of<K>(), solution->lines, solution->segments, progress.stop);
-  if (options.free_at_exit) (void)solution.release();  // not a leak: see DrawOptions::free_at_exit
-  else solution.reset();
+  if (!options.free_at_exit) solution.reset();
   times.write = seconds_since(mark);
   drawing.crease_degrees = options.crease;
   drawing.times = times;
@@ -155,7 +151,7 @@ const SceneIntersections& intersections_of(const Scene& scene, const DrawOptions
 LineDrawing draw_lines(const Scene& scene, const View& view, const DrawOptions& options,
                        const SceneIntersections* shared) {
   std::unique_ptr<SceneIntersections> own;
-  const LeftToExitOnStop<SceneIntersections> on_stop{own, options.free_at_exit};
+  const LeftToExit<SceneIntersections> left_to_exit{own, options.free_at_exit};
   const SceneIntersections& intersections = intersections_of(scene, options, shared, own);
   try {
     return with_kernel(options.kernel,

@@ -1,5 +1,8 @@
 // load_cad (hlr/cad/cad.hpp): OCC reads and tessellates the model; the triangles, welded along
 // the B-rep's shared edges and vertices, go through kernel's make_mesh like any mesh.
+#include "file_names.hpp"
+#include "occ_module.hpp"
+
 #include <hlr/cad/cad.hpp>
 #include <hlr/kernel/mesh_edges.hpp>  // UnionFind: its root is the lowest node
 
@@ -46,21 +49,14 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <type_traits>
 #include <unordered_map>
 
 namespace hlr::cad {
 namespace {
 
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-std::string extension_of(const std::string& path) {
-  const std::size_t slash = path.find_last_of('/'), dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  return path.substr(dot);
-}
+using detail::extension_of;
+using detail::lower;
 
 std::string stem_of(const std::string& path) {
   std::string s = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
@@ -468,32 +464,16 @@ std::vector<CadPart> read_model(const std::string& path, const CadOptions& optio
 }
 
 }  // namespace
-
-bool is_cad_extension(const std::string& extension) {
-  const std::string ext = lower(extension);
-  return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep";
-}
-
-std::vector<CadPart> load_cad(const std::string& path, const CadOptions& options) {
-  try {
-    return read_model(path, options);
-  } catch (const Standard_Failure& e) {
-    throw ImportError(path + ": OpenCASCADE failed: " + (e.GetMessageString() ? e.GetMessageString() : "?"));
-  }
-}
-
-Scene load_scene(const std::vector<std::string>& paths, const CadOptions& options) {
-  Scene scene;
-  for (const auto& path : paths) {
-    if (is_cad_extension(extension_of(path))) {
-      for (CadPart& part : load_cad(path, options)) scene.add(std::move(part.mesh), part.report);
-    } else {
-      ImportReport report;
-      Mesh mesh = load_mesh(path, report);
-      scene.add(std::move(mesh), report);
-    }
-  }
-  return scene;
-}
-
 }  // namespace hlr::cad
+
+// hlr_cad_occ's entry point (occ_module.hpp); the module's other symbols are hidden.
+extern "C" __attribute__((visibility("default"))) void hlr_cad_read_model(const std::string& path,
+                                                                          const hlr::cad::CadOptions& options,
+                                                                          std::vector<hlr::cad::CadPart>& parts) {
+  try {
+    parts = hlr::cad::read_model(path, options);
+  } catch (const Standard_Failure& e) {
+    throw hlr::ImportError(path + ": OpenCASCADE failed: " + (e.GetMessageString() ? e.GetMessageString() : "?"));
+  }
+}
+static_assert(std::is_same_v<decltype(hlr_cad_read_model), hlr::cad::detail::ReadModelFunction>);

@@ -412,4 +412,20 @@ TEST(CadCli, BadInputIsOneLineAndNoFile) {
   }
 }
 
+// Without its OpenCASCADE module (occ_module.hpp) the program still runs on meshes, and a CAD
+// file gets one line naming the file and the module, and no output.
+TEST(CadCli, MissingModuleIsOneLineAndNoFile) {
+  const fs::path dir = fixtures() / "no-module";
+  fs::create_directories(dir);
+  ::setenv("HLR_CAD_MODULE", (dir / "missing_hlr_cad_occ.so").c_str(), 1);
+  const Outcome run = hlr_run({"draw", fixture("plate.step"), "-o", (dir / "x.svg").string()});
+  ::unsetenv("HLR_CAD_MODULE");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_EQ(run.err.rfind("hlr: " + fixture("plate.step") + ": CAD input needs hlr's OpenCASCADE module", 0), 0u)
+      << run.err;
+  EXPECT_NE(run.err.find("missing_hlr_cad_occ.so"), std::string::npos) << run.err;
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
 }  // namespace

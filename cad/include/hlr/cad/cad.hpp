@@ -17,10 +17,12 @@
 //
 // Kernel reads mesh files and knows nothing of OCC; the hook is load_scene below, which the
 // program calls instead of kernel's: CAD extensions come here, the others go to load_mesh. OCC
-// stays in this module.
+// stays in this module, and in a part of it (the hlr_cad_occ.so module) that is loaded only when a
+// CAD file is read, so that runs on meshes do not pay for loading OCC (src/occ_module.hpp).
 //
 // Errors throw ImportError "FILE: problem": unreadable or not a STEP/IGES/BRep file, no shape, no
-// faces, a failed tessellation, a bad deflection. OCC's own messages are silenced.
+// faces, a failed tessellation, a bad deflection, the OCC module missing. OCC's own messages are
+// silenced.
 #pragma once
 
 #include <hlr/kernel/scene.hpp>

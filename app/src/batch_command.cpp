@@ -406,7 +406,7 @@ int run(const BatchOptions& options) {
 Subcommand add_batch_command(CLI::App& parent) {
   auto options = std::make_shared<BatchOptions>();
   CLI::App* cmd = parent.add_subcommand(
-      "batch", "Run the jobs of an hlr-batch/1 manifest (draw, sheet, surfaces, check, clip) on a local pool of processes.");
+      "batch", "Run the jobs of an hlr-batch/1 manifest (draw, sheet, surfaces, check, shadows, mesh, clip) on a local pool of processes.");
   cmd->add_option("manifest", options->manifest, "hlr-batch/1 file; the jobs' paths are relative to its folder")
       ->required()
       ->type_name("MANIFEST.json");
@@ -438,8 +438,9 @@ Subcommand add_batch_command(CLI::App& parent) {
       "\n"
       "A job is {\"command\": \"draw\", \"meshes\": [\"a.off\"], \"view\": \"iso\", \"options\": [\"--crease\", \"40\"],\n"
       "\"outputs\": [\"out/a_iso.svg\"]}: hlr COMMAND MESH... --view VIEW OPTION... -o OUTPUT..., run in the\n"
-      "manifest's folder. A check job's outputs are its --diff .png and --json .json; a clip job has\n"
-      "\"inputs\": [\"SUBJECT.json\", \"CLIP.json\"] instead of meshes and no view. One line per job on stdout\n"
+      "manifest's folder. A check job's outputs are its --diff .png and --json .json; shadows and mesh\n"
+      "jobs have no view (lights are shadows options); a clip job has \"inputs\": [\"SUBJECT.json\",\n"
+      "\"CLIP.json\"] instead of meshes and no view. One line per job on stdout\n"
       "(\"job K ok: ...\" or \"job K failed: ...\"; at --timeout \"job K stopped: ...\", \"job K not run: ...\");\n"
       "exit status 1 when any job failed, 124 at --timeout. The same manifest runs on Dask:\n"
       "python3 -m hlrdraw.batch MANIFEST --scheduler ADDRESS.\n"

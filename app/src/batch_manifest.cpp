@@ -57,12 +57,14 @@ const std::vector<CommandShape>& command_shapes() {
       {"sheet", "meshes", 0, "", "--views", true, {{"", "-o"}}, 0, {"-o", "--output"}},
       {"surfaces", "meshes", 0, "", "--view", true, {{"", "-o"}}, 0, {"-o", "--output"}},
       {"check", "meshes", 0, "", "--view", true, {{".png", "--diff"}, {".json", "--json"}}, 0, {"--diff", "--json"}},
+      {"shadows", "meshes", 0, "", nullptr, true, {{"", "-o"}}, 0, {"-o", "--output"}},
+      {"mesh", "meshes", 0, "", nullptr, false, {{"", "-o"}}, 1, {"-o", "--output"}},
       {"clip", "inputs", 2, "SUBJECT.json and CLIP.json", nullptr, false, {{"", "-o"}}, 1, {"-o", "--output"}},
   };
   return shapes;
 }
 
-// "draw, sheet, surfaces, check or clip"
+// "draw, sheet, surfaces, check, shadows, mesh or clip"
 std::string command_list() {
   std::string list;
   const auto& shapes = command_shapes();

@@ -129,13 +129,16 @@ def test_a_malformed_manifest_is_one_line(tmp_path):
 
 
 def prepare_clip_and_check(folder):
-    """A manifest of a clip job (its polygon files in the manifest's folder), a check job and a draw
-    job."""
+    """A manifest of a clip job (its polygon files in the manifest's folder), a check job, a draw
+    job, a shadows job and a mesh job (neither has a view)."""
     jobs = [{"command": "clip", "inputs": ["polygons/subject.json", "polygons/clip.json"], "options": ["--exact"],
              "outputs": ["out/clip.json"]},
             {"command": "check", "meshes": ["meshes/l_bracket.off"], "view": "iso", "options": ["--raster", "256"],
              "outputs": ["out/check/diff.png", "out/check/report.json"]},
-            {"command": "draw", "meshes": ["meshes/cube.off"], "view": "top", "outputs": ["out/top.svg"]}]
+            {"command": "draw", "meshes": ["meshes/cube.off"], "view": "top", "outputs": ["out/top.svg"]},
+            {"command": "shadows", "meshes": ["meshes/l_bracket.off"], "options": ["--sun", "1,2,-4"],
+             "outputs": ["out/shadows.csv", "out/shadows.json"]},
+            {"command": "mesh", "meshes": ["meshes/plate_with_hole.off"], "outputs": ["out/plate.obj"]}]
     manifest = prepare(folder, jobs)
     os.makedirs(folder / "polygons")
     for name in ("subject.json", "clip.json"):
@@ -143,7 +146,7 @@ def prepare_clip_and_check(folder):
     return manifest
 
 
-def test_dask_runs_clip_and_check_jobs_as_hlr_batch_and_the_cli_do(tmp_path):
+def test_dask_runs_clip_check_shadows_and_mesh_jobs_as_hlr_batch_and_the_cli_do(tmp_path):
     local = prepare_clip_and_check(tmp_path / "local")
     dask = prepare_clip_and_check(tmp_path / "dask")
     run = run_hlr("batch", local, "--jobs", "2")
@@ -151,9 +154,10 @@ def test_dask_runs_clip_and_check_jobs_as_hlr_batch_and_the_cli_do(tmp_path):
     on_dask = dask_batch(dask)
     assert on_dask.returncode == 0, on_dask.stderr
     assert results(on_dask.stdout) == results(run.out) == [
-        "job 0 ok: out/clip.json", "job 1 ok: out/check/diff.png out/check/report.json", "job 2 ok: out/top.svg"]
+        "job 0 ok: out/clip.json", "job 1 ok: out/check/diff.png out/check/report.json", "job 2 ok: out/top.svg",
+        "job 3 ok: out/shadows.csv out/shadows.json", "job 4 ok: out/plate.obj"]
     files = out_files(tmp_path / "local")
-    assert files == out_files(tmp_path / "dask") and len(files) == 4
+    assert files == out_files(tmp_path / "dask") and len(files) == 7
     for name in files:
         assert comparable(tmp_path / "dask" / name) == comparable(tmp_path / "local" / name), name
     # The clip job's file is the one `hlr clip` writes for the same command line (but its time).

@@ -1354,6 +1354,45 @@ TEST_F(CliBatch, RunsClipAndCheckJobsAsTheCliWould) {
                   "../out/check/report.json", "--threads", "1"}));
 }
 
+TEST_F(CliBatch, RunsShadowsAndMeshJobsAsTheCliWould) {
+  // Neither command has a view; mesh writes one file and has no --threads.
+  const std::string box = (kScenes.parent_path() / "shadows" / "box_on_ground.off").string();
+  const std::string bracket = (kScenes / "l_bracket.off").string();
+  const fs::path m = manifest(json::array({
+      {{"command", "shadows"}, {"meshes", {box}}, {"options", {"--sun", "1,2,-4"}},
+       {"outputs", {"../out/sun.json", "../out/sun.csv"}}},
+      {{"command", "mesh"}, {"meshes", {bracket}}, {"outputs", {"../out/bracket.ply"}}},
+      {{"command", "shadows"}, {"meshes", {box}}, {"outputs", {"../out/no_light.json"}}},
+  }));
+  Outcome run = hlr({"batch", m.string(), "--jobs", "2", "--threads", "1"});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  const std::vector<std::string> lines = sorted_lines(run.out);
+  ASSERT_EQ(lines.size(), 3u) << run.out;
+  EXPECT_EQ(lines[0], "job 0 ok: ../out/sun.json ../out/sun.csv");
+  EXPECT_EQ(lines[1], "job 1 ok: ../out/bracket.ply");
+  EXPECT_EQ(lines[2].rfind("job 2 failed: ", 0), 0u) << lines[2];
+  EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"bracket.ply", "sun.csv", "sun.json"}));
+
+  ASSERT_EQ(hlr({"shadows", box, "--sun", "1,2,-4", "--threads", "1", "-o", out("direct_sun.json").string(), "-o",
+                 out("direct_sun.csv").string()})
+                .exit_code,
+            0);
+  ASSERT_EQ(hlr({"mesh", bracket, "-o", out("direct_bracket.ply").string()}).exit_code, 0);
+  EXPECT_EQ(without_stats(json::parse(slurp(out("sun.json")))), without_stats(json::parse(slurp(out("direct_sun.json")))));
+  EXPECT_EQ(slurp(out("sun.csv")), slurp(out("direct_sun.csv")));
+  EXPECT_EQ(slurp(out("bracket.ply")), slurp(out("direct_bracket.ply")));
+
+  Outcome list = hlr({"batch", m.string(), "--list", "--threads", "3"});
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  std::istringstream jobs(list.out);
+  std::string shadows_line, mesh_line;
+  std::getline(jobs, shadows_line);
+  std::getline(jobs, mesh_line);
+  EXPECT_EQ(json::parse(shadows_line).at("arguments"),
+            json({"shadows", box, "--sun", "1,2,-4", "-o", "../out/sun.json", "-o", "../out/sun.csv", "--threads", "3"}));
+  EXPECT_EQ(json::parse(mesh_line).at("arguments"), json({"mesh", bracket, "-o", "../out/bracket.ply"}));
+}
+
 TEST_F(CliBatch, JobTimeoutIsEveryJobsOwnTimeoutUnlessItHasOne) {
   const fs::path m = manifest(json::array({
       {{"command", "draw"}, {"meshes", {"meshes/cube.off"}}, {"outputs", {"x.svg"}}},
@@ -1391,8 +1430,12 @@ TEST_F(CliBatch, MalformedManifestsAreOneLineAndRunNothing) {
       {R"({"format": "hlr-lines/1", "jobs": []})", R"(format is "hlr-lines/1", expected "hlr-batch/1")"},
       {R"({"format": "hlr-batch/1"})", R"("jobs" is missing)"},
       {R"({"format": "hlr-batch/1", "jobs": [)" + job + R"(, 3]})", "job 1 is a number, expected an object"},
-      {R"({"format": "hlr-batch/1", "jobs": [{"command": "shadows", "meshes": ["a"], "outputs": ["b"]}]})",
-       R"(job 0: unknown command "shadows" (a job is draw, sheet, surfaces, check or clip))"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "frames", "meshes": ["a"], "outputs": ["b"]}]})",
+       R"(job 0: unknown command "frames" (a job is draw, sheet, surfaces, check, shadows, mesh or clip))"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "shadows", "meshes": ["a"], "view": "iso", "outputs": ["b"]}]})",
+       R"(job 0: unknown key "view" (a shadows job has command, meshes, options and outputs))"},
+      {R"({"format": "hlr-batch/1", "jobs": [{"command": "mesh", "meshes": ["a"], "outputs": ["b.off", "c.off"]}]})",
+       R"(job 0: "outputs" has 2 paths, expected 1)"},
       // clip jobs: two "inputs" (polygon files), one output, no view
       {R"({"format": "hlr-batch/1", "jobs": [{"command": "clip", "meshes": ["a", "b"], "outputs": ["c"]}]})",
        R"(job 0: a clip job reads "inputs" (SUBJECT.json and CLIP.json), not "meshes")"},

@@ -41,20 +41,14 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
       auto end_point = [&](const ViewPoint<K>& p) -> Point3 {
         return {frame.rounded(p.x, 0), frame.rounded(p.y, 1), frame.rounded(p.z, 2)};
       };
-      std::optional<std::array<FT, 3>> delta;  // b - a, made once per line where an inner point needs it
       auto at = [&](const FT& t) -> Point3 {
         if constexpr (G::exact_constructions) {
           const auto [lo, hi] = G::interval(t);
           if (lo == hi && lo == 0) return end_point(line.a);
           if (lo == hi && lo == 1) return end_point(line.b);
-          if (!delta) delta = {line.b.x - line.a.x, line.b.y - line.a.y, line.b.z - line.a.z};
-          return {frame.rounded(line.a.x + t * (*delta)[0], 0), frame.rounded(line.a.y + t * (*delta)[1], 1),
-                  frame.rounded(line.a.z + t * (*delta)[2], 2)};
-        } else {
-          return {frame.rounded(line.a.x + t * (line.b.x - line.a.x), 0),
-                  frame.rounded(line.a.y + t * (line.b.y - line.a.y), 1),
-                  frame.rounded(line.a.z + t * (line.b.z - line.a.z), 2)};
         }
+        return {frame.rounded_between(line.a.x, line.b.x, t, 0), frame.rounded_between(line.a.y, line.b.y, t, 1),
+                frame.rounded_between(line.a.z, line.b.z, t, 2)};
       };
       DrawingPiece* out = &d.pieces[first[index]];
       for (std::size_t k = 0; k < line.pieces.size(); ++k) {

@@ -15,6 +15,7 @@
 
 #include <hlr/hidden_line/lines.hpp>
 #include <hlr/hidden_line/parallel.hpp>
+#include <hlr/kernel/line_parameters.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
 #include <hlr/kernel/view_predicates.hpp>
 
@@ -45,13 +46,9 @@ struct ImageLine {
       : a(pa), b(pb), dx(G::x(pb) - G::x(pa)), dy(G::y(pb) - G::y(pa)), along_x(G::compare_x(pa, pb) != 0) {}
 
   // The parameter of a point on the line.
-  FT param(const P& q) const { return along_x ? (G::x(q) - G::x(a)) / dx : (G::y(q) - G::y(a)) / dy; }
+  FT param(const P& q) const { return parameter_along<K>(a, q, along_x ? dx : dy, along_x); }
   // The parameter where the line meets the line through c and d (not parallel to it).
-  FT param_of_crossing(const P& c, const P& d) const {
-    const FT ex = G::x(d) - G::x(c), ey = G::y(d) - G::y(c);
-    const FT rx = G::x(c) - G::x(a), ry = G::y(c) - G::y(a);
-    return (rx * ey - ry * ex) / (dx * ey - dy * ex);
-  }
+  FT param_of_crossing(const P& c, const P& d) const { return crossing_parameter<K>(a, dx, dy, c, d); }
   // On the exact kernel the line's own ends for t exactly 0 or 1, rather than constructions equal
   // to them.
   P at(const FT& t) const {

@@ -118,6 +118,24 @@ struct ExactTypeOf<FT, std::void_t<typename FT::Exact_type>> {
   using type = typename FT::Exact_type;
 };
 
+// The crossing of the line through a, b with the line through c, d, in the arithmetic of
+// `Kernel` (CGAL's interval or exact kernel): Epeck's line_intersection as one lazy construction.
+// On intervals, a denominator that may be zero throws CGAL's uncertain-conversion exception, and
+// the lazy construction then computes the point exactly at once, as CGAL's own does.
+template <class Kernel>
+struct LineCrossing {
+  using result_type = typename Kernel::Point_2;
+  result_type operator()(const result_type& a, const result_type& b, const result_type& c,
+                         const result_type& d) const {
+    using T = typename Kernel::FT;
+    const T abx = b.x() - a.x(), aby = b.y() - a.y(), cdx = d.x() - c.x(), cdy = d.y() - c.y();
+    const T den = abx * cdy - aby * cdx;
+    if (den == 0) throw std::runtime_error("line_intersection: lines are parallel");
+    const T t = ((c.x() - a.x()) * cdy - (c.y() - a.y()) * cdx) / den;
+    return result_type(a.x() + t * abx, a.y() + t * aby);
+  }
+};
+
 template <class K>
 struct CgalGeometry {
   using FT = typename K::FT;
@@ -246,22 +264,26 @@ struct CgalGeometry {
   // On the exact kernel, where a line is known to be axis-parallel (its points' coordinates are one
   // double), the crossing takes that coordinate itself rather than a construction equal to it, so
   // that crossings along the line (a strip border) compare without exact arithmetic.
+  // On the exact kernel the crossing is one lazy node made from the four points (LineCrossing),
+  // not lines and an intersection object over them: fewer nodes to allocate, and one to evaluate
+  // where a predicate needs the point exactly.
   static Point line_intersection(const Point& a, const Point& b, const Point& c, const Point& d) {
-    typename K::Line_2 l1(a, b), l2(c, d);
-    auto result = CGAL::intersection(l1, l2);
-    if (result) {
-      if (const Point* p = boost::get<Point>(&*result)) {
-        if constexpr (exact_constructions) {
-          const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b), &ic = CGAL::approx(c), &id = CGAL::approx(d);
-          const bool ax = compare_intervals(ia.x(), ib.x()) == 0, cx = compare_intervals(ic.x(), id.x()) == 0;
-          const bool ay = compare_intervals(ia.y(), ib.y()) == 0, cy = compare_intervals(ic.y(), id.y()) == 0;
-          if (ax || cx || ay || cy)
-            return Point(ax ? a.x() : cx ? c.x() : p->x(), ay ? a.y() : cy ? c.y() : p->y());
-        }
-        return *p;
-      }
+    if constexpr (exact_constructions) {
+      using Crossing = CGAL::Lazy_construction<K, LineCrossing<typename K::Approximate_kernel>,
+                                               LineCrossing<typename K::Exact_kernel>>;
+      const Point p = Crossing()(a, b, c, d);
+      const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b), &ic = CGAL::approx(c), &id = CGAL::approx(d);
+      const bool ax = compare_intervals(ia.x(), ib.x()) == 0, cx = compare_intervals(ic.x(), id.x()) == 0;
+      const bool ay = compare_intervals(ia.y(), ib.y()) == 0, cy = compare_intervals(ic.y(), id.y()) == 0;
+      if (ax || cx || ay || cy) return Point(ax ? a.x() : cx ? c.x() : p.x(), ay ? a.y() : cy ? c.y() : p.y());
+      return p;
+    } else {
+      typename K::Line_2 l1(a, b), l2(c, d);
+      auto result = CGAL::intersection(l1, l2);
+      if (result)
+        if (const Point* p = boost::get<Point>(&*result)) return *p;
+      throw std::runtime_error("line_intersection: lines are parallel");
     }
-    throw std::runtime_error("line_intersection: lines are parallel");
   }
   static Point midpoint(const Point& a, const Point& b) { return CGAL::midpoint(a, b); }
 
@@ -287,13 +309,26 @@ struct CgalGeometry {
     if constexpr (exact_constructions) {
       const std::pair<double, double> approx = CGAL::to_interval(v);
       if (approx.first == approx.second) return approx.first;
-      using ET = typename FT::Exact_type;
-      const ET& e = CGAL::exact(v);
-      const std::pair<double, double> tight = CGAL::to_interval(e);
-      if (tight.first == tight.second) return tight.first;
-      return e - ET(tight.first) <= ET(tight.second) - e ? tight.first : tight.second;
+      return nearest_double(CGAL::exact(v));
     } else {
       return CGAL::to_double(v);
+    }
+  }
+  // to_double(a + t (b - a)), the point at t of the segment from a to b, without lazy nodes for
+  // it: output rounds every inner point of every line, and each lazy node evaluated exactly costs
+  // a once-flag (a futex call) and an MPFR interval refresh on top of its rational arithmetic.
+  static double to_double_between(const FT& a, const FT& b, const FT& t) {
+    if constexpr (exact_constructions) {
+      {
+        CGAL::Protect_FPU_rounding<true> protect;
+        const auto v = CGAL::approx(a) + CGAL::approx(t) * (CGAL::approx(b) - CGAL::approx(a));
+        if (v.inf() == v.sup()) return v.inf();
+      }
+      using ET = typename FT::Exact_type;
+      const ET& ea = CGAL::exact(a);
+      return nearest_double(ET(ea + CGAL::exact(t) * (CGAL::exact(b) - ea)));
+    } else {
+      return CGAL::to_double(a + t * (b - a));
     }
   }
   // A double near v, for candidate filters and rough orders only, never for a decision: a bound
@@ -314,6 +349,14 @@ struct CgalGeometry {
   static std::string exact_string(const FT& v) {
     if constexpr (exact_constructions) return exact_rational_string(v);
     else return exact_string_of_double(CGAL::to_double(v));
+  }
+
+ private:
+  template <class ET>
+  static double nearest_double(const ET& e) {
+    const std::pair<double, double> tight = CGAL::to_interval(e);
+    if (tight.first == tight.second) return tight.first;
+    return e - ET(tight.first) <= ET(tight.second) - e ? tight.first : tight.second;
   }
 };
 
@@ -357,6 +400,7 @@ struct Geometry<DoubleKernel> {
   }
   static bool same_number(double, double) { return false; }
   static double to_double(double v) { return v; }
+  static double to_double_between(double a, double b, double t) { return a + t * (b - a); }
   static double rough_double(double v) { return v; }
   static std::pair<double, double> interval(double v) { return {v, v}; }
   using Exact = double;
@@ -393,6 +437,7 @@ concept GeometryKernel = requires(const typename Geometry<K>::Point& p, const ty
   { Geometry<K>::midpoint(p, p) } -> std::same_as<typename Geometry<K>::Point>;
   // numbers out: rounded once for output, rough for filters, enclosed, exact for long sums
   { Geometry<K>::to_double(v) } -> std::same_as<double>;
+  { Geometry<K>::to_double_between(v, v, v) } -> std::same_as<double>;
   { Geometry<K>::rough_double(v) } -> std::same_as<double>;
   { Geometry<K>::interval(v) } -> std::same_as<std::pair<double, double>>;
   { Geometry<K>::exact(v) } -> std::convertible_to<typename Geometry<K>::Exact>;

@@ -212,6 +212,10 @@ class ViewFrame {
   // double, then divided by the axis scale (irrational in general, so this is as close as output
   // gets); never -0.
   double rounded(const FT& value, int axis) const { return Geometry<K>::to_double(value) / scale_[axis] + 0.0; }
+  // rounded(a + t (b - a), axis), without building that number.
+  double rounded_between(const FT& a, const FT& b, const FT& t, int axis) const {
+    return Geometry<K>::to_double_between(a, b, t) / scale_[axis] + 0.0;
+  }
   const View& view() const { return view_; }
 
   // The orthonormal frame in double, row-major 4x4 (the JSON's world_to_view). Perspective:

@@ -2,6 +2,7 @@
 // model's circles, carried from the B-rep (Mesh::source_curves) to the sheet.
 #include "source_curves.hpp"
 
+#include <hlr/kernel/mesh_edges.hpp>  // edge_key
 #include <hlr/kernel/view_predicates.hpp>
 
 #include <cmath>
@@ -11,10 +12,6 @@
 
 namespace hlr::exporter {
 namespace {
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-}
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 

@@ -146,8 +146,12 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   if (sheet.merged.contact > 0)
     std::cout << "  " << sheet.merged.contact << " intersection segments left off the sheet (surfaces meeting at under "
               << style.contact_degrees << " degrees: contact of nearly tangent surfaces)\n";
-  if (!sheet.curves.circles.empty() || sheet.curves.arcs > 0)
-    std::cout << "  " << sheet.curves.circles.size() << " circles and " << sheet.curves.arcs
+  const auto& source = sheet.curves.from_source;
+  if (source.circles + source.arcs + sheet.curves.ellipses.size() > 0)
+    std::cout << "  " << source.circles << " circles, " << source.arcs << " arcs and " << sheet.curves.ellipses.size()
+              << " ellipses from the model's own curves\n";
+  if (sheet.curves.circles.size() > source.circles || sheet.curves.arcs > source.arcs)
+    std::cout << "  " << sheet.curves.circles.size() - source.circles << " circles and " << sheet.curves.arcs - source.arcs
               << " arcs drawn as such (vertices within " << style.merge_distance << " mm of a circle on the sheet)\n";
   std::cout << "  outputs written in " << written << " s (" << drawing.times.total + written << " s in all)\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';

@@ -31,7 +31,8 @@ void add_style_options(CLI::App& cmd, StyleOptions& options) {
   cmd.add_option("--merge-distance", options.merge_distance,
                  "the drawing's resolution on the sheet: lines closer than MM are drawn once, visible over hidden, "
                  "and runs of segments whose vertices lie within MM of a circle are drawn as circles and arcs (0: "
-                 "neither; the JSON keeps every piece)")
+                 "neither; the JSON keeps every piece; a CAD model's own circles are drawn as circles, arcs and ellipses "
+                 "at any distance)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str()
       ->type_name("MM");

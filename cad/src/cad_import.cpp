@@ -6,6 +6,7 @@
 #include <hlr/cad/cad.hpp>
 #include <hlr/kernel/mesh_edges.hpp>  // UnionFind: its root is the lowest node
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepLib.hxx>
@@ -367,6 +368,24 @@ CadPart make_part(const TopoDS_Shape& body, const std::string& path, const std::
     }
   }
 
+  // The circles among them: OCC's exact centre, normal and radius, and the edge's polyline
+  // (the first face's; both faces' are one after welding).
+  std::vector<SourceCurve> curves;
+  std::vector<bool> curve_done(edges.Extent() + 1, false);
+  for (const Polygon& polygon : polygons) {
+    if (edge_kind[polygon.edge] == 0 || curve_done[polygon.edge]) continue;
+    curve_done[polygon.edge] = true;
+    const BRepAdaptor_Curve curve(TopoDS::Edge(edges(polygon.edge)));  // with the edge's location
+    if (curve.GetType() != GeomAbs_Circle) continue;
+    const gp_Circ circle = curve.Circle();
+    const gp_Pnt& c = circle.Location();
+    const gp_Dir& n = circle.Axis().Direction();
+    SourceCurve out{{c.X(), c.Y(), c.Z()}, {n.X(), n.Y(), n.Z()}, circle.Radius(), {}};
+    for (std::uint32_t node : polygon.nodes)
+      if (out.vertices.empty() || out.vertices.back() != vertex_of[node]) out.vertices.push_back(vertex_of[node]);
+    if (out.vertices.size() >= 2) curves.push_back(std::move(out));
+  }
+
   std::vector<std::vector<std::uint32_t>> mesh_faces;
   std::vector<std::int32_t> mesh_face_group;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -393,6 +412,7 @@ CadPart make_part(const TopoDS_Shape& body, const std::string& path, const std::
       if (it->second & 2u) mesh.source_edges[k] |= std::uint8_t(1u << (i + 4));
     }
   }
+  mesh.source_curves = std::move(curves);
   mesh.group_names.clear();
   for (int f = 1; f <= faces.Extent(); ++f) mesh.group_names.push_back("face " + std::to_string(f));
   return part;

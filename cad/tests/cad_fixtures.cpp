@@ -1,6 +1,7 @@
 // The OCC fixtures of cad_fixtures.hpp.
 #include "cad_fixtures.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -20,6 +21,7 @@
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
 #include <STEPCAFControl_Writer.hxx>
+#include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
@@ -27,6 +29,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <XCAFApp_Application.hxx>
@@ -186,6 +189,41 @@ BrepCounts brep_counts(const std::string& fixture) {
   c.face_pairs = int(pairs.size());
   c.tangent_pairs = int(tangent.size());
   return c;
+}
+
+std::vector<BrepCircle> brep_circles(const std::string& step_path) {
+  STEPControl_Reader reader;
+  if (reader.ReadFile(step_path.c_str()) != IFSelect_RetDone) throw std::runtime_error(step_path + ": cannot read");
+  reader.TransferRoots();
+  const TopoDS_Shape s = reader.OneShape();
+  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+  TopExp::MapShapesAndUniqueAncestors(s, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  std::vector<BrepCircle> out;
+  for (int i = 1; i <= edge_faces.Extent(); ++i) {
+    const TopoDS_Edge& e = TopoDS::Edge(edge_faces.FindKey(i));
+    if (BRep_Tool::Degenerated(e) || edge_faces(i).Extent() != 2) continue;
+    const BRepAdaptor_Curve curve(e);
+    if (curve.GetType() != GeomAbs_Circle) continue;
+    const gp_Circ c = curve.Circle();
+    out.push_back({{c.Location().X(), c.Location().Y(), c.Location().Z()},
+                   {c.Axis().Direction().X(), c.Axis().Direction().Y(), c.Axis().Direction().Z()},
+                   c.Radius()});
+  }
+  return out;
+}
+
+void write_bench_parts(const std::string& dir, const std::vector<int>& sizes) {
+  Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+  for (int n : sizes) {
+    // All holes in one cut: a compound of tools, one boolean instead of n^2.
+    TopoDS_Compound holes;
+    BRep_Builder builder;
+    builder.MakeCompound(holes);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) builder.Add(holes, cylinder(i + 1.0, j + 1.0, 0.25, -1, 2));
+    const std::string name = "grid_" + std::to_string(n) + "x" + std::to_string(n) + ".step";
+    write_step(cut(box(0, 0, 0, n + 1.0, n + 1.0, 1), holes), dir + "/" + name);
+  }
 }
 
 }  // namespace hlr::cad_test

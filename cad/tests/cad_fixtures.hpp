@@ -2,7 +2,9 @@
 // committed as binaries): boxes, cylinders, booleans and fillets written to STEP, IGES and BREP.
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace hlr::cad_test {
 
@@ -25,5 +27,17 @@ struct BrepCounts {
   int faces = 0, face_pairs = 0, tangent_pairs = 0;
 };
 BrepCounts brep_counts(const std::string& fixture);  // "plate", "flange", "bracket"
+
+// The circles and circular arcs among the B-rep edges between two faces of a STEP file, as OCC
+// reads them (STEPControl_Reader, Geom's own circles), for the true-curve tests.
+struct BrepCircle {
+  std::array<double, 3> centre, normal;
+  double radius;
+};
+std::vector<BrepCircle> brep_circles(const std::string& step_path);
+
+// Larger parts for the benchmark (bench/cad/run.sh), into `dir`: grid_NxN.step, a 10 x 10 x 1
+// plate per hole pitch with an n x n grid of through holes (d 0.5 on a pitch of 1), for n in `sizes`.
+void write_bench_parts(const std::string& dir, const std::vector<int>& sizes);
 
 }  // namespace hlr::cad_test

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -371,6 +372,149 @@ TEST(CadCli, AssemblyPartsInTheDrawing) {
     if (cmd == "shadows") args.insert(args.end(), {"--sun", "1,2,-4"});
     const Outcome r = hlr_run(args);
     EXPECT_EQ(r.exit_code, 0) << cmd << ": " << r.err;
+  }
+}
+
+// ---- true curves ---------------------------------------------------------------------------------
+
+// The ENTITIES of a DXF as (type, group code -> value) for the codes a curve has.
+struct DxfEntity {
+  std::string type;
+  std::map<int, double> value;
+};
+std::vector<DxfEntity> dxf_entities(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<DxfEntity> out;
+  bool entities = false;
+  for (std::string code, value; std::getline(in, code) && std::getline(in, value);) {
+    const int c = std::stoi(code);
+    if (!value.empty() && value.back() == '\r') value.pop_back();
+    if (c == 2 && value == "ENTITIES") entities = true;
+    if (!entities) continue;
+    if (c == 0) {
+      if (value == "ENDSEC") break;
+      out.push_back({value, {}});
+    } else if (!out.empty() && (c == 10 || c == 11 || c == 20 || c == 21 || (c >= 40 && c <= 42) || c == 50 || c == 51)) {
+      out.back().value[c] = std::stod(value);
+    }
+  }
+  return out;
+}
+
+// The circles of the B-rep (OCC, read from the STEP file by the fixtures' code, not hlr's) in a
+// view, grouped where their images coincide (a through hole's two rims seen face-on): each group's
+// entities in the DXF must go round it exactly once in all, visible and hidden together (ISO 128
+// precedence drops a hidden run under an equal visible one), so there are at least as many
+// entities as groups, and fewer groups than face-on edges where rims coincide. Face-on: CIRCLE or
+// ARC of the B-rep's centre and radius; at a slant: ELLIPSE of its centre, major radius and ratio
+// |cos|; edge-on (front and right views of these parts): none, and no circle recovered either.
+struct CurveImage {
+  double x, y, radius, ratio;  // centre and radius in the view; ellipse: minor over major
+  int edges = 0;
+  double turns = 0;  // what the DXF's entities on it sweep, in turns
+};
+
+TEST(CadCli, TrueCirclesFromTheBrep) {
+  constexpr double two_pi = 2 * 3.14159265358979323846;
+  for (const std::string name : {"plate", "flange"}) {
+    const std::vector<cad_test::BrepCircle> circles = cad_test::brep_circles(fixture(name + ".step"));
+    ASSERT_GT(circles.size(), 4u) << name;
+    const Mesh mesh = cad::load_cad(fixture(name + ".step"))[0].mesh;
+    std::array<double, 3> lo = mesh.vertices[0], hi = lo;
+    for (const auto& v : mesh.vertices)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+    const double size = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), tolerance = 1e-9 * size;
+    // Merged at the sheet's resolution (the default), and not (no circle recovered from polygons).
+    for (const bool merged : {true, false}) {
+      for (const std::string view_name : {"front", "top", "right", "iso"}) {
+        const std::string label = name + " " + view_name + (merged ? "" : " unmerged");
+        const View view = view_named(view_name);
+        const Vec3 d = view.direction, up = view.up;
+        Vec3 x{d[1] * up[2] - d[2] * up[1], d[2] * up[0] - d[0] * up[2], d[0] * up[1] - d[1] * up[0]};
+        Vec3 y{x[1] * d[2] - x[2] * d[1], x[2] * d[0] - x[0] * d[2], x[0] * d[1] - x[1] * d[0]};
+        auto unit = [](Vec3& v) {
+          const double n = std::hypot(v[0], v[1], v[2]);
+          for (double& c : v) c /= n;
+        };
+        unit(x), unit(y);
+        auto dot = [](const Vec3& a, const std::array<double, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+        std::vector<CurveImage> face_on, slanted;
+        std::size_t face_on_edges = 0;
+        for (const auto& c : circles) {
+          const Vec3 cross{c.normal[1] * d[2] - c.normal[2] * d[1], c.normal[2] * d[0] - c.normal[0] * d[2],
+                           c.normal[0] * d[1] - c.normal[1] * d[0]};
+          const double cosine = std::abs(dot(d, c.normal)) / std::hypot(d[0], d[1], d[2]);
+          if (cosine == 0) continue;  // edge-on: a segment, drawn as lines
+          const bool parallel = cross[0] == 0 && cross[1] == 0 && cross[2] == 0;
+          face_on_edges += parallel;
+          std::vector<CurveImage>& list = parallel ? face_on : slanted;
+          const CurveImage image{dot(x, c.centre), dot(y, c.centre), c.radius, parallel ? 1 : cosine};
+          auto same = [&](const CurveImage& o) {
+            return std::abs(o.x - image.x) <= tolerance && std::abs(o.y - image.y) <= tolerance &&
+                   std::abs(o.radius - image.radius) <= tolerance && std::abs(o.ratio - image.ratio) <= 1e-9;
+          };
+          auto it = std::find_if(list.begin(), list.end(), same);
+          if (it == list.end()) it = list.insert(list.end(), image);
+          ++it->edges;
+        }
+        std::vector<std::string> args{"draw", fixture(name + ".step"), "--view", view_name, "-o", out(name + ".dxf"), "-o",
+                                      out(name + ".svg"), "-o", out(name + ".json")};
+        if (!merged) args.insert(args.end(), {"--merge-distance", "0"});
+        const Outcome run = hlr_run(args);
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        std::size_t dxf_circles = 0, dxf_arcs = 0, dxf_curves = 0;
+        for (const DxfEntity& e : dxf_entities(slurp(out(name + ".dxf")))) {
+          const bool circle = e.type == "CIRCLE", arc = e.type == "ARC", ellipse = e.type == "ELLIPSE";
+          if (!circle && !arc && !ellipse) continue;
+          ++dxf_curves;
+          dxf_circles += circle;
+          dxf_arcs += arc;
+          auto v = [&](int code) { return e.value.count(code) ? e.value.at(code) : 0.0; };
+          std::vector<CurveImage>& list = ellipse ? slanted : face_on;
+          const double radius = ellipse ? std::hypot(v(11), v(21)) : v(40);
+          // 1e-9 of the size, as the issue asks; and face-on, the B-rep's own radius and its centre
+          // rounded once (a circle recovered from the polygon is off by some 1e-12 of the size).
+          const double close = ellipse ? tolerance : 1e-14 * size;
+          const auto it = std::find_if(list.begin(), list.end(), [&](const CurveImage& c) {
+            return std::abs(c.x - v(10)) <= close && std::abs(c.y - v(20)) <= close &&
+                   (ellipse ? std::abs(c.radius - radius) <= tolerance && std::abs(c.ratio - v(40)) <= 1e-9
+                            : c.radius == radius);
+          });
+          ASSERT_NE(it, list.end()) << label << ": " << e.type << " at (" << v(10) << ", " << v(20) << ") r " << radius
+                                    << " is no B-rep circle";
+          double sweep = circle ? 360 : ellipse ? (v(42) - v(41)) * 360 / two_pi : v(51) - v(50);
+          while (sweep <= 0) sweep += 360;
+          it->turns += sweep / 360;
+        }
+        EXPECT_EQ(slanted.empty() && face_on.empty(), dxf_curves == 0) << label;
+        for (const CurveImage& c : face_on)
+          EXPECT_NEAR(c.turns, 1, 1e-9) << label << ": the circle at (" << c.x << ", " << c.y << ") r " << c.radius;
+        // At a slant a hole's hidden rim touches the silhouette lines of its wall, and the sheet's
+        // merge (at the drawing's resolution) trims the rim's runs that run along them.
+        for (const CurveImage& c : slanted) {
+          if (!merged) EXPECT_NEAR(c.turns, 1, 1e-9) << label << ": the ellipse at (" << c.x << ", " << c.y << ")";
+          EXPECT_LE(c.turns, 1 + 1e-9) << label << ": the ellipse at (" << c.x << ", " << c.y << ") r " << c.radius;
+          EXPECT_GE(c.turns, 0.9) << label << ": the ellipse at (" << c.x << ", " << c.y << ") r " << c.radius;
+        }
+        if (view_name == "top") EXPECT_GE(dxf_curves, face_on.size()) << label;
+        if (view_name == "top") EXPECT_GT(face_on_edges, face_on.size()) << label;  // rims that coincide
+        if (view_name == "front" || view_name == "right") EXPECT_EQ(dxf_curves, 0u) << label;  // every circle edge-on
+        // The SVG draws the DXF's circles (one <circle> each) and its ellipses (arcs "A rx ry ..."
+        // with rx != ry, at most 3/8 of a turn each).
+        const std::string svg = slurp(out(name + ".svg"));
+        std::size_t svg_circles = 0, svg_elliptic = 0;
+        for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++svg_circles;
+        for (std::size_t at = svg.find('A'); at != std::string::npos; at = svg.find('A', at + 1)) {
+          double rx = 0, ry = 0;
+          if (std::sscanf(svg.c_str() + at, "A%lf %lf ", &rx, &ry) == 2 && rx != ry) ++svg_elliptic;
+        }
+        EXPECT_EQ(svg_circles, dxf_circles) << label;
+        EXPECT_GE(svg_elliptic, dxf_curves - dxf_circles - dxf_arcs) << label;
+        EXPECT_EQ(svg_elliptic == 0, dxf_curves == dxf_circles + dxf_arcs) << label;
+        const json doc = json::parse(slurp(out(name + ".json")));
+        EXPECT_EQ(doc["stats"]["circles"].get<std::size_t>(), dxf_circles) << label;
+      }
+    }
   }
 }
 

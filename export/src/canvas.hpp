@@ -39,12 +39,13 @@ struct GroupStyle {
 // never spans more than half a turn (the painter splits longer ones), so that its SVG flags are
 // never ill-conditioned.
 struct SheetPath {
-  enum class Op : std::uint8_t { move, line, horizontal, vertical, arc, close };
+  enum class Op : std::uint8_t { move, line, horizontal, vertical, arc, ellipse, close };
   struct Item {
     Op op;
     double x = 0, y = 0;  // end point (horizontal: x only; vertical: y only)
     double cx = 0, cy = 0, r = 0, a0 = 0, a1 = 0;
     bool increasing = false;
+    double ry = 0, rotation = 0;  // ellipse: r is the semi-axis turned by `rotation` (radians, as angles)
   };
   std::vector<Item> items;
   void move(double x, double y) { items.push_back({Op::move, x, y}); }
@@ -55,6 +56,13 @@ struct SheetPath {
   // An arc of the circle (cx, cy, r) from angle a0 to a1, ending at (x, y).
   void arc(double x, double y, double cx, double cy, double r, double a0, double a1, bool increasing) {
     items.push_back({Op::arc, x, y, cx, cy, r, a0, a1, increasing});
+  }
+  // An arc of the ellipse with centre (cx, cy) and semi-axes rx (at angle `rotation`) and ry,
+  // the points centre + rx cos a along the first axis + ry sin a along the second, from a = a0 to
+  // a1 (at most half a turn, as arcs), ending at (x, y).
+  void ellipse(double x, double y, double cx, double cy, double rx, double ry, double rotation, double a0, double a1,
+               bool increasing) {
+    items.push_back({Op::ellipse, x, y, cx, cy, rx, a0, a1, increasing, ry, rotation});
   }
   bool empty() const { return items.empty(); }
 };

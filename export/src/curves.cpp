@@ -529,4 +529,9 @@ std::vector<CentreLine> centre_marks(const DrawingCurves& curves, double toleran
   return out;
 }
 
+Point2 ellipse_point(const DrawingEllipse& e, double t) {
+  const double c = std::cos(t), s = e.ratio * std::sin(t);
+  return {e.centre[0] + c * e.major[0] - s * e.major[1], e.centre[1] + c * e.major[1] + s * e.major[0]};
+}
+
 }  // namespace hlr::exporter

@@ -88,6 +88,12 @@ class DxfCanvas final : public Canvas {
           at = {item.x, item.y};
           run.push_back(flip(at));
           break;
+        case SheetPath::Op::ellipse:
+          // Sheet views write their ellipses themselves (dxf_curves); the canvas draws borders
+          // and symbols, which have none: its end point suffices.
+          at = {item.x, item.y};
+          run.push_back(flip(at));
+          break;
         case SheetPath::Op::close:
           if (!arcs && run.size() > 2 && flip(first) == run.front()) {
             polyline(dxf_, out_, run, true, attributes());
@@ -246,6 +252,11 @@ void dxf_curves(DL_Dxf& dxf, DxfText& out, const DrawingCurves& curves, bool hid
       if (c.visible != visible) continue;
       dxf.writeCircle(out, DL_CircleData(c.centre[0], c.centre[1], 0.0, c.radius),
                       DL_Attributes(layer(visible, c.mesh), 256, -1, "BYLAYER", ltscale));
+    }
+    for (const auto& e : curves.ellipses) {
+      if (e.visible != visible) continue;
+      dxf.writeEllipse(out, DL_EllipseData(e.centre[0], e.centre[1], 0.0, e.major[0], e.major[1], 0.0, e.ratio, e.t0, e.t1),
+                       DL_Attributes(layer(visible, e.mesh), 256, -1, "BYLAYER", ltscale));
     }
   }
 }

@@ -131,6 +131,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   LineDrawing drawing =
       make_drawing<K>(scene.input, frame, kernel_kind_of<K>(), solution->lines, solution->segments, progress.stop);
   if (!options.free_at_exit) solution.reset();
+  attach_source_curves(drawing, scene.meshes);
   times.write = seconds_since(mark);
   drawing.crease_degrees = options.crease;
   drawing.times = times;

@@ -227,7 +227,10 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     Point2 from_point = s.a;
     // Uncovered leftovers at the ends shorter than the distance are slivers: dropped.
     auto piece = [&](double t1, const Point2& end) {
-      if (t1 - from >= distance) keep(DrawingSegment{from_point, end, s.visible, s.mesh, s.meeting_degrees});
+      if (t1 - from < distance) return;
+      DrawingSegment kept_piece = s;
+      kept_piece.a = from_point, kept_piece.b = end;
+      keep(kept_piece);
     };
     for (const Cover& r : runs) {
       if (r.lo > from) piece(r.lo, r.at_lo.value_or(at(r.lo)));

@@ -63,6 +63,30 @@ SheetPath sheet_path(const DrawingPath& p, const Placement& at) {
   return out;
 }
 
+// An ellipse of the view on the sheet: its axes flipped with y, its parameters t become -t (as
+// angles do), split into arcs as circles are.
+SheetPath sheet_ellipse(const DrawingEllipse& e, const Placement& at) {
+  const double mx = at.scale * e.major[0], my = -at.scale * e.major[1];
+  const double rx = std::hypot(mx, my), ry = e.ratio * rx, rotation = std::atan2(my, mx);
+  const double cx = at.x(e.centre[0]), cy = at.y(e.centre[1]);
+  auto point = [&](double t) {
+    const Point2 p = ellipse_point(e, t);
+    return std::array<double, 2>{at.x(p[0]), at.y(p[1])};
+  };
+  SheetPath out;
+  const auto start = point(e.t0);
+  out.move(start[0], start[1]);
+  const double sweep = e.t1 - e.t0;
+  const int pieces = std::max(1, int(std::ceil(sweep / (0.75 * pi))));
+  for (int k = 1; k <= pieces; ++k) {
+    const double t0 = e.t0 + sweep * (k - 1) / pieces, t1 = e.t0 + sweep * k / pieces;
+    const auto end = point(t1);
+    out.ellipse(end[0], end[1], cx, cy, rx, ry, rotation, -t0, -t1, false);
+  }
+  if (e.closed) out.close();
+  return out;
+}
+
 Pen pen_of(double width, const std::vector<double>& dashes = {}) { return Pen{width, dashes}; }
 
 }  // namespace
@@ -244,6 +268,11 @@ void paint_view(Canvas& c, const SheetLines& lines, const Placement& at, const s
         if (circle.visible != visible || circle.mesh != part) continue;
         open_group();
         c.circle(at.x(circle.centre[0]), at.y(circle.centre[1]), at.scale * circle.radius);
+      }
+      for (const auto& e : curves.ellipses) {
+        if (e.visible != visible || e.mesh != part) continue;
+        open_group();
+        c.path(sheet_ellipse(e, at));
       }
       if (open) c.end();
     }

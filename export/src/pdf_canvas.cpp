@@ -66,6 +66,17 @@ class PdfCanvas final : public Canvas {
           if (item.increasing) cairo_arc(cr_, item.cx, item.cy, item.r, item.a0, item.a1);
           else cairo_arc_negative(cr_, item.cx, item.cy, item.r, item.a0, item.a1);
           break;
+        case SheetPath::Op::ellipse:
+          // The unit circle in the ellipse's frame: cairo keeps the path in device space, so the
+          // transform is gone again before the stroke (whose width stays round).
+          cairo_save(cr_);
+          cairo_translate(cr_, item.cx, item.cy);
+          cairo_rotate(cr_, item.rotation);
+          cairo_scale(cr_, item.r, item.ry);
+          if (item.increasing) cairo_arc(cr_, 0, 0, 1, item.a0, item.a1);
+          else cairo_arc_negative(cr_, 0, 0, 1, item.a0, item.a1);
+          cairo_restore(cr_);
+          break;
         case SheetPath::Op::close: cairo_close_path(cr_); break;
       }
     }

@@ -4,6 +4,7 @@
 
 #include "numbers.hpp"
 #include "paint.hpp"
+#include "source_curves.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -127,9 +128,20 @@ SheetLines sheet_lines_at(const LineDrawing& drawing, const DrawingStyle& style,
   SheetLines sheet;
   sheet.scale = scale;
   sheet.merged = sheet_segments_at(drawing, style, scale);
-  sheet.chains = chain_segments(sheet.merged.segments);
+  // The source's own circles first (source_curves.hpp); what is left is chained, and its circles
+  // recovered from the polylines.
+  DrawingCurves source;
+  const bool true_curves = style.circles && !drawing.source_curves.empty();
+  std::vector<DrawingSegment> rest;
+  if (true_curves) rest = detail::draw_source_curves(drawing, sheet.merged.segments, source);
+  sheet.chains = chain_segments(true_curves ? rest : sheet.merged.segments);
   const double tolerance = style.merge_distance / scale;  // the drawing's resolution, in model units
   sheet.curves = recover_curves(sheet.chains, style.circles ? tolerance : 0);
+  sheet.curves.paths.insert(sheet.curves.paths.end(), source.paths.begin(), source.paths.end());
+  sheet.curves.circles.insert(sheet.curves.circles.end(), source.circles.begin(), source.circles.end());
+  sheet.curves.ellipses = std::move(source.ellipses);
+  sheet.curves.arcs += source.arcs;
+  sheet.curves.from_source = {source.circles.size(), source.arcs};
   if (style.centre_lines) sheet.centre_lines = centre_marks(sheet.curves, tolerance, centre_overshoot_mm / scale);
   sheet.shadows = drawing.shadows;
   return sheet;
@@ -178,6 +190,14 @@ std::optional<Bounds> sheet_bounds(const SheetLines& sheet) {
   for (const auto& c : sheet.curves.circles) {
     include(b, any, c.centre[0] - c.radius, c.centre[1] - c.radius);
     include(b, any, c.centre[0] + c.radius, c.centre[1] + c.radius);
+  }
+  for (const auto& e : sheet.curves.ellipses) {
+    // Sampled finely enough for a scale's fit (extent only: 1 - cos(pi / 256) < 1e-4).
+    constexpr int samples = 256;
+    for (int k = 0; k <= samples; ++k) {
+      const Point2 p = ellipse_point(e, e.t0 + (e.t1 - e.t0) * k / samples);
+      include(b, any, p[0], p[1]);
+    }
   }
   if (!any) return std::nullopt;
   return b;

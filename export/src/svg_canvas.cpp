@@ -88,6 +88,20 @@ class SvgCanvas final : public Canvas {
           out_ += ' ';
           mm(item.y);
           break;
+        case SheetPath::Op::ellipse:
+          out_ += 'A';
+          mm(item.r);
+          out_ += ' ';
+          mm(item.ry);
+          out_ += ' ';
+          mm(item.rotation * 180 / 3.14159265358979323846);
+          out_ += " 0 ";
+          out_ += item.increasing ? '1' : '0';
+          out_ += ' ';
+          mm(item.x);
+          out_ += ' ';
+          mm(item.y);
+          break;
         case SheetPath::Op::close: out_ += 'Z'; break;
       }
     }

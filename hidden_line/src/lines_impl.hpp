@@ -587,7 +587,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       const FeatureLine<K>& line = lines.lines[span.line];
       const auto a = image.at(span.t0), b = image.at(span.t1);
       if (alone) {
-        emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees});
+        emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees, span.line});
         continue;
       }
       std::vector<std::pair<FT, FT>> covered;
@@ -608,7 +608,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       bool at_start = true;  // from is span.t0, whose point is a
       auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
         const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
-                                line.meeting_degrees};
+                                line.meeting_degrees, span.line};
         grid->insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
         out.push_back(d);
         drawn_line.push_back(span.line);

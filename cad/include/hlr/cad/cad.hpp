@@ -10,6 +10,8 @@
 //     OFF/OBJ/PLY keep it;
 //   - Mesh::source_edges marks the triangle edges on B-rep edges between two faces, and which of
 //     those are tangent: features.hpp draws them instead of applying the crease rule;
+//   - Mesh::source_curves holds the circles and circular arcs among those B-rep edges (OCC's
+//     centre, normal and radius, and the edge's polyline), which export draws as true curves;
 //   - a mesh is named from the STEP product (XCAF) where the file has one, else "STEM#N".
 // The tessellation is the model: every visibility decision downstream is exact on its doubles.
 // Tangency (G1) of a B-rep edge is OCC's classification of the input (BRepLib::EncodeRegularity

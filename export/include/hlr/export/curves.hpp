@@ -61,10 +61,29 @@ struct DrawingCircle {
   std::uint32_t mesh = 0;
 };
 
+// An arc of an ellipse (a source circle seen at a slant, source_curves.hpp), as DXF's ELLIPSE
+// has it: the points centre + cos t major + sin t ratio major', major' = major turned a quarter
+// turn counter-clockwise, for t from t0 to t1 counter-clockwise (radians; a whole one: closed).
+struct DrawingEllipse {
+  Point2 centre{}, major{};
+  double ratio = 1;  // minor over major, in (0, 1]
+  double t0 = 0, t1 = 0;
+  bool closed = false;
+  bool visible = true;
+  std::uint32_t mesh = 0;
+};
+
+// The point of `e` at parameter t.
+Point2 ellipse_point(const DrawingEllipse& e, double t);
+
 struct DrawingCurves {
   std::vector<DrawingPath> paths;  // in the order of the chains
   std::vector<DrawingCircle> circles;
+  std::vector<DrawingEllipse> ellipses;  // only from source curves
   std::size_t arcs = 0;  // arc steps in `paths`
+  struct {
+    std::size_t circles = 0, arcs = 0;
+  } from_source;  // of `circles` and `arcs`, those of source curves (the rest recovered)
 };
 
 // The chains as paths, circles and arcs where the rule above finds them (tolerance in the

@@ -60,6 +60,21 @@ struct DrawingSegment {
   bool visible = true;
   std::uint32_t mesh = 0;
   double meeting_degrees = 90;  // intersection lines: the angle at which their surfaces meet
+  std::uint32_t line = 0;       // index of its line in the LineSet
+  std::int32_t curve = -1;      // the LineDrawing::source_curves it lies on, or -1
+};
+
+// A source circle (Mesh::source_curves: a CAD model's circular B-rep edge) as an orthographic
+// view sees it, in view coordinates: its centre, and the ellipse it projects to, with major
+// semi-axis `major` (a vector of length radius) and `ratio` = |cos| of the angle between its
+// plane's normal and the view direction. face_on: the normal is parallel to the view direction,
+// decided exactly on the doubles (normal x direction = 0 in rationals): the image is the circle
+// itself. edge_on (normal . direction = 0, likewise): a segment, drawn as the polyline.
+struct ViewCurve {
+  Point2 centre{}, major{};
+  double radius = 0, ratio = 1;
+  bool face_on = false, edge_on = false;
+  std::uint32_t mesh = 0;
 };
 
 // Set when a drawing comes from the raster path (hidden_line/raster.hpp) instead of a kernel.
@@ -82,6 +97,7 @@ struct LineDrawing {
   std::optional<RasterInfo> raster;      // JSON "kernel": "raster" and a "raster" object
   std::vector<DrawingPiece> pieces;      // JSON: every piece
   std::vector<DrawingSegment> segments;  // SVG and DXF
+  std::vector<ViewCurve> source_curves;  // attach_source_curves: what DrawingSegment::curve indexes
   std::vector<DrawingArea> shadows;      // SVG and DXF: with DrawOptions::shadow_lights
   hidden_line::LineStats stats;
   double crease_degrees = 30;
@@ -117,6 +133,10 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
 // classification decides one class per pixel step).
 LineDrawing make_raster_drawing(const InputInfo& input, const hidden_line::RasterDrawing& raster,
                                 const hidden_line::LineSet<DoubleKernel>& lines, int resolution);
+
+// Sets drawing.source_curves from the meshes' Mesh::source_curves and marks the segments that lie
+// on them (by their line's mesh edge), in an orthographic view; a perspective one keeps none.
+void attach_source_curves(LineDrawing& drawing, const std::vector<Mesh>& meshes);
 
 // Sheet sizes after ISO 216, landscape.
 struct Sheet {

@@ -100,6 +100,7 @@ struct DrawnSegment {
   bool visible = true;
   std::uint32_t mesh = 0;
   double meeting_degrees = 90;  // of its line
+  std::uint32_t line = 0;       // its line's index in the LineSet
 };
 
 template <class K>

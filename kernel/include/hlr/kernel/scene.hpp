@@ -60,6 +60,15 @@ namespace hlr {
 // those must not overflow.
 inline constexpr double kMaxImportCoordinate = 1e100;
 
+// A circle or circular arc of the source's exact geometry, as the source gives it (doubles), and
+// the polyline of mesh edges that stands for it: vertices[k] to vertices[k + 1] are mesh edges
+// (input vertex indices); a whole circle ends where it starts.
+struct SourceCurve {
+  std::array<double, 3> centre{}, normal{};  // normal: of the circle's plane, unit
+  double radius = 0;
+  std::vector<std::uint32_t> vertices;
+};
+
 struct Mesh {
   std::string file;                               // path as given
   std::vector<std::array<double, 3>> vertices;    // as read, in file order (STL: merged corners)
@@ -76,6 +85,9 @@ struct Mesh {
   // edge is also tangent (its faces meet smoothly, as at a fillet's boundary). features.hpp says
   // how they are drawn. Faces of at most 4 corners (the CAD import makes triangles).
   std::vector<std::uint8_t> source_edges;
+  // The source's circles and circular arcs (a CAD model's B-rep edges), or empty: export draws
+  // the visible and hidden runs of their polylines with the true centre and radius.
+  std::vector<SourceCurve> source_curves;
   std::string name;  // the part's name where the source names it (a STEP product), else empty
 };
 

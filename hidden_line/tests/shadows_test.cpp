@@ -174,6 +174,32 @@ TEST(ShadowFixtures, PointLightFacingAndCasters) {
   EXPECT_EQ(r.views[0].view.direction, (Vec3{0, 0, -1}));
 }
 
+// A light outside the tetrahedron's slanted face, where only a slanted plane through the light
+// has every vertex on one side (none of the box-centre and axis planes): found by the hull search.
+// The slanted face is wholly lit (twice its area along z: 100), the others face away.
+TEST(ShadowFixtures, PointLightBesideASlantedFace) {
+  Mesh tetra;
+  tetra.file = "tetra";
+  tetra.vertices = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}};
+  tetra.faces = {{1, 2, 3}, {0, 2, 1}, {0, 1, 3}, {0, 3, 2}};
+  tetra.face_index = {0, 1, 2, 3};
+  const std::vector<Mesh> meshes{tetra};
+  const Light light = bulb(4, 4, 4);
+  const auto view = hidden_line::point_light_view(meshes, light);
+  ASSERT_TRUE(view.has_value());
+  EXPECT_NE(view->direction[0], 0.0);  // not an axis
+  const ShadowResult r = cast_shadows(meshes, {light});
+  EXPECT_EQ(r.face_lit_area2[0][0][0], hidden_line::ShadowFT(100));
+  for (std::uint32_t f = 1; f < 4; ++f) EXPECT_EQ(r.face_lit_area2[0][0][f], hidden_line::ShadowFT(0)) << f;
+  const auto errors = check_shadows(meshes, {light}, r);
+  EXPECT_TRUE(errors.empty()) << joined(errors);
+  // In the slanted face's plane (x + y + z = 10, beside the face): edge-on, and still outside.
+  EXPECT_TRUE(hidden_line::point_light_view(meshes, bulb(6, 6, -2)).has_value());
+  // Inside it, or on its face: refused.
+  EXPECT_FALSE(hidden_line::point_light_view(meshes, bulb(1, 1, 1)).has_value());
+  EXPECT_FALSE(hidden_line::point_light_view(meshes, bulb(2, 3, 5)).has_value());
+}
+
 TEST(ShadowFixtures, SunsAndPointLightsTogether) {
   const auto meshes = load(fixture("box_on_ground.off"));
   const std::vector<Light> lights{sun(1, 2, -4), bulb(1, 1, 4), sun(0, 0, -1), bulb(1, -4, 4)};
@@ -215,19 +241,22 @@ TEST(ShadowFixtures, BadLightsAreRefused) {
 }
 
 // The oracle itself: planted errors are found.
+// The result with the ground's last shadow polygon (face 0 of the box fixture) called lit.
+ShadowResult ground_shadow_called_lit(ShadowResult r) {
+  auto& sl = r.sources[r.face_source[0][0]].lights[0];
+  EXPECT_FALSE(sl.shadow.empty());
+  if (sl.shadow.empty()) return r;
+  sl.lit.push_back(sl.shadow.back().polygon);
+  sl.shadow.pop_back();
+  return r;
+}
+
 TEST(ShadowOracle, FindsPlantedErrors) {
   const auto meshes = load(fixture("box_on_ground.off"));
   const std::vector<Light> lights{sun(1, 2, -4)};
   const ShadowResult good = cast_shadows(meshes, lights);
   ASSERT_TRUE(check_shadows(meshes, lights, good).empty());
-  {  // a shadow polygon called lit
-    ShadowResult bad = good;
-    auto& sl = bad.sources[bad.face_source[0][0]].lights[0];
-    ASSERT_FALSE(sl.shadow.empty());
-    sl.lit.push_back(sl.shadow.back().polygon);
-    sl.shadow.pop_back();
-    EXPECT_FALSE(check_shadows(meshes, lights, bad).empty());
-  }
+  EXPECT_FALSE(check_shadows(meshes, lights, ground_shadow_called_lit(good)).empty());
   {  // a lit polygon dropped
     ShadowResult bad = good;
     auto& sl = bad.sources[bad.face_source[0][0]].lights[0];
@@ -244,12 +273,7 @@ TEST(ShadowOracle, FindsPlantedErrors) {
     const ShadowResult r = cast_shadows(meshes, bulbs);
     ASSERT_TRUE(check_shadows(meshes, bulbs, r).empty());
     EXPECT_FALSE(check_shadows(meshes, {bulb(1, 1, 4)}, r).empty());
-    ShadowResult bad = r;
-    auto& sl = bad.sources[bad.face_source[0][0]].lights[0];
-    ASSERT_FALSE(sl.shadow.empty());
-    sl.lit.push_back(sl.shadow.back().polygon);
-    sl.shadow.pop_back();
-    EXPECT_FALSE(check_shadows(meshes, bulbs, bad).empty());
+    EXPECT_FALSE(check_shadows(meshes, bulbs, ground_shadow_called_lit(r)).empty());
   }
 }
 

@@ -12,8 +12,8 @@
 // point (u, v) on a source whose light-view plane is s = a u + b v + c is the model point
 // p = e + (u X/|X|² + v Y/|Y|² + d/|d|²) / s, rational again. One perspective view sees one half
 // space: a point light is accepted when every vertex of the scene lies strictly in front of a plane
-// through it (point_light_view says which plane, or why none was found); a light among the
-// geometry (a bulb in a room) is refused, not split into several views.
+// through it (point_light_view chooses it, point_light_defect says when none was found); a light
+// among the geometry (a bulb in a room) is refused, not split into several views.
 //
 //   lit     the visible fragments of sources that face the light, and the parts of hidden
 //           fragments hidden only by a coplanar tie: where the visible fragment over them lies
@@ -55,9 +55,11 @@ std::optional<std::string> light_defect(const Light& light);
 // The light view of a point light: the perspective view from it, looking along the first of these
 // directions (doubles, taken as exact) that has every vertex of the scene strictly in front of the
 // light, decided exactly: toward the centre of the scene's bounding box, then -Z, +Z, -X, +X, -Y,
-// +Y. Its near plane lies at or before the nearest vertex, so nothing is clipped. Nothing when no
-// direction qualifies (the light inside the scene's convex hull, on a face, or beside it where
-// none of these planes separates them); then point_light_defect says so.
+// +Y, then from the light toward the nearest point of the vertices' convex hull (searched in
+// double, up to 64 Frank-Wolfe steps, each candidate tested exactly). Its near plane lies at or
+// before the nearest vertex, so nothing is clipped. Nothing when no direction qualifies (the light
+// inside the convex hull, on a face, or outside it by too little for the search); then
+// point_light_defect says so.
 std::optional<View> point_light_view(const std::vector<Mesh>& meshes, const Light& light);
 std::optional<std::string> point_light_defect(const std::vector<Mesh>& meshes, const Light& light);
 

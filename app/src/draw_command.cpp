@@ -26,7 +26,13 @@ struct DrawOptions {
   StyleOptions style;
   int raster = 0;  // pixels; 0: the exact path (or --kernel)
   std::string dash = "arc";
-  std::vector<std::string> suns;  // --sun: shadows as surface detail
+  std::vector<std::string> suns;          // --sun: shadows as surface detail
+  std::vector<std::string> point_lights;  // --point-light: likewise
+  // The first light option as typed, for errors: "--sun 1,2,-4".
+  std::string first_light() const {
+    return suns.empty() ? "--point-light " + point_lights.front() : "--sun " + suns.front();
+  }
+  bool lights() const { return !suns.empty() || !point_lights.empty(); }
 };
 
 enum class Format { json, svg, pdf, dxf, png };
@@ -65,8 +71,10 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;
   job.shadow_lights = parse_suns(options.suns);
+  for (const auto& light : parse_point_lights(options.point_lights)) job.shadow_lights.push_back(light);
   if (!job.shadow_lights.empty() && (kind != KernelKind::exact || options.raster > 0))
-    throw UsageError("--sun " + options.suns.front() + ": shadows are drawn by the exact path only");
+    throw UsageError(options.first_light() + ": shadows are drawn by the exact path only");
+  check_point_lights(scene.meshes, options.point_lights);
   job.progress = display.progress();
   job.free_at_exit = true;  // the run ends with the outputs
   exporter::RasterRun raster;
@@ -162,8 +170,9 @@ int run(const DrawOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
   const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
-  if (view->eye && !options.suns.empty()) {
-    std::cerr << "hlr: --sun is not supported with --eye yet (shadows are drawn in orthographic views)" << std::endl;
+  if (view->eye && options.lights()) {
+    std::cerr << "hlr: " << options.first_light()
+              << ": shadows are not supported with --eye yet (they are drawn in orthographic views)" << std::endl;
     return kExitUsage;
   }
   const std::optional<exporter::DrawingStyle> style = resolve_style(options.style);
@@ -200,6 +209,10 @@ Subcommand add_draw_command(CLI::App& parent) {
                   "draw the shadows of a directional light whose rays travel along DX,DY,DZ as surface detail "
                   "(filled light grey; DXF: HATCH on layer SHADOW); may be given several times")
       ->type_name("DX,DY,DZ");
+  cmd->add_option("--point-light", options->point_lights,
+                  "draw the shadows of a point light at X,Y,Z (outside the scene, as for hlr shadows) likewise; "
+                  "may be given several times")
+      ->type_name("X,Y,Z");
   cmd->add_option("--dash", options->dash,
                   "hidden-line dashes in the PNG: arc (by arc length along each line) or paper (the P-buffer "
                   "paper's 8x8 screen pattern, which breaks up on diagonal lines)")

@@ -1,4 +1,5 @@
-// `hlr shadows MESH... (--sun DX,DY,DZ | --sun-at TIME --site LAT,LON[,NORTH])... [--union]
+// `hlr shadows MESH... (--sun DX,DY,DZ | --sun-at TIME --site LAT,LON[,NORTH] | --point-light X,Y,Z)...
+//  [--union]
 //  -o OUT.json|OUT.csv|OUT.svg`: the options, then hidden_line::cast_shadows, then the writers.
 #include "atomic_file.hpp"
 #include "errors.hpp"
@@ -51,8 +52,6 @@ struct Lights {
 
 Lights resolve_lights(const ShadowsOptions& o) {
   Lights out;
-  if (!o.point_lights.empty())
-    throw UsageError("--point-light " + o.point_lights.front() + ": point lights are not supported yet (use --sun)");
   for (const auto& light : parse_suns(o.suns)) {
     out.lights.push_back(light);
     out.labels.push_back({"sun" + std::to_string(out.lights.size()), std::nullopt, {}, 0, 0});
@@ -81,7 +80,13 @@ Lights resolve_lights(const ShadowsOptions& o) {
       }
     }
   }
-  if (out.lights.empty()) throw UsageError("no light: give --sun DX,DY,DZ or --sun-at TIME --site LAT,LON");
+  std::size_t points = 0;
+  for (const auto& light : parse_point_lights(o.point_lights)) {
+    out.lights.push_back(light);
+    out.labels.push_back({"point" + std::to_string(++points), std::nullopt, {}, 0, 0});
+  }
+  if (out.lights.empty())
+    throw UsageError("no light: give --sun DX,DY,DZ, --sun-at TIME --site LAT,LON or --point-light X,Y,Z");
   return out;
 }
 
@@ -99,6 +104,7 @@ int run(const ShadowsOptions& options) {
   const Scene scene = read_scene(options.meshes, options.limits, options.cad);
   const auto& input = scene.input;
   const double read = seconds_since(start);
+  check_point_lights(scene.meshes, options.point_lights);
 
   hidden_line::ShadowOptions shadow_options;
   shadow_options.union_shadows = options.union_shadows;
@@ -149,7 +155,10 @@ Subcommand add_shadows_command(CLI::App& parent) {
                   "the site for --sun-at: latitude and longitude in degrees (north, east positive), and "
                   "optionally true north in degrees clockwise from the model's +Y (+Z is up)")
       ->type_name("LAT,LON[,NORTH]");
-  cmd->add_option("--point-light", options->point_lights, "a point light (not supported yet)")->type_name("X,Y,Z");
+  cmd->add_option("--point-light", options->point_lights,
+                  "a point light at X,Y,Z, outside the scene: every vertex strictly on one side of a plane "
+                  "through it (one perspective view from the light); may be given several times")
+      ->type_name("X,Y,Z");
   cmd->add_flag("--union", options->union_shadows,
                 "also the union of every face's shadows over all lights (CSV columns, JSON union_shadow_area)");
   cmd->add_option("-o,--output", options->outputs,
@@ -166,6 +175,7 @@ Subcommand add_shadows_command(CLI::App& parent) {
       "Examples:\n"
       "  hlr shadows fixtures/shadows/box_on_ground.off --sun 1,2,-4 -o out/box.json -o out/box.csv\n"
       "  hlr shadows site.off --sun-at 2026-06-21T09:00+10:00/15:00/PT1H --site -33.86,151.21 --union -o out/day.csv\n"
+      "  hlr shadows fixtures/shadows/box_on_ground.off --point-light 1,-4,4 -o out/lamp.json -o out/lamp.svg\n"
       "\n"
       "Each light is solved on its own: the scene seen from the light, its visible polygons the lit parts,\n"
       "taken back exactly onto their faces; lit + shadow = every face. Format: docs/FORMATS.md (hlr-shadows/1).");

@@ -200,8 +200,14 @@ std::string shadows_svg(const ShadowsDocument& doc) {
     const double ox = left + (panel - (x1 - x0) * scale) / 2 - x0 * scale;
     const double oy = gap + (panel + (y1 - y0) * scale) / 2 + y0 * scale;
     out += "<g id=\"light-" + std::to_string(k) + "\">\n";
-    const auto& d = v.view.direction;
-    const double dl = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const bool point = doc.lights[k].kind == hidden_line::Light::point;
+    // The direction the light travels to a source (a point light: to its first corner).
+    auto light_direction = [&](std::uint32_t source) -> std::array<double, 3> {
+      if (!point) return v.view.direction;
+      const auto& q = doc.result.sources[source].polygons.front().outer.front();
+      const auto& e = doc.lights[k].vector;
+      return {CGAL::to_double(q.x) - e[0], CGAL::to_double(q.y) - e[1], CGAL::to_double(q.z) - e[2]};
+    };
     for (int pass = 0; pass < 2; ++pass) {
       const bool lit = pass == 1;
       // Lit faces in a warm light shade, brighter where the light falls more steeply on them
@@ -213,6 +219,8 @@ std::string shadows_svg(const ShadowsDocument& doc) {
         out += "<path";
         if (lit) {
           const auto& n = doc.result.sources[p.source].normal;
+          const auto d = light_direction(p.source);
+          const double dl = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
           const double nx = CGAL::to_double(n[0]), ny = CGAL::to_double(n[1]), nz = CGAL::to_double(n[2]);
           const double cosine = std::clamp(-(nx * d[0] + ny * d[1] + nz * d[2]) / (dl * std::sqrt(nx * nx + ny * ny + nz * nz)), 0.0, 1.0);
           const int red = int(200 + 55 * cosine), green = int(160 + 80 * cosine), blue = int(90 + 80 * cosine);
@@ -239,10 +247,10 @@ std::string shadows_svg(const ShadowsDocument& doc) {
     append_fixed(out, left, 1);
     out += "\" y=\"";
     append_fixed(out, gap + panel + caption - 6, 1);
-    out += "\" font-family=\"sans-serif\" font-size=\"14\">" + text + " (";
+    out += "\" font-family=\"sans-serif\" font-size=\"14\">" + text + (point ? " at (" : " (");
     for (int i = 0; i < 3; ++i) {
       if (i) out += ", ";
-      detail::append_json_number(out, d[i]);
+      detail::append_json_number(out, point ? doc.lights[k].vector[i] : v.view.direction[i]);
     }
     out += ")</text>\n</g>\n";
   }

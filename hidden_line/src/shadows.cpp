@@ -1,10 +1,11 @@
 // cast_shadows (shadows.hpp): the light views, their area sorts, and the fragments taken back to
 // model space, on the exact kernel. The only translation unit that instantiates shadow code.
 //
-// Stages per light (directional):
-//   1. light view: ViewFrame looking along the light direction; build_sources (back faces of
-//      closed components removed, as they lie behind their own front faces; edge-on faces dropped,
-//      as they cast no shadow of positive area; coplanar faces consolidated);
+// Stages per light:
+//   1. light view: ViewFrame looking along the light direction (a point light: the perspective
+//      view from it, point_light_view); build_sources (back faces of closed components removed,
+//      as they lie behind their own front faces; edge-on faces dropped, as they cast no shadow of
+//      positive area; coplanar faces consolidated);
 //   2. area_sort with the hidden polygons kept;
 //   3. map back: each fragment of a source facing the light is lifted onto the source's plane
 //      (the rational map in shadows.hpp); visible fragments and coplanar ties are lit, the other
@@ -19,6 +20,7 @@
 #include "box_index.hpp"
 #include "sources_impl.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -212,18 +214,19 @@ ModelSources model_sources(const std::vector<Mesh>& meshes) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// One directional light.
+// One light.
 
 Vec3FT cross(const Vec3FT& a, const Vec3FT& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 FT dot(const Vec3FT& a, const Vec3FT& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-View light_view_of(const Light& light) {
+// Looking along `direction`: up +Z, or +Y when the direction is vertical.
+View light_view_along(const Vec3& direction) {
   View v;
   v.name = "light";
-  v.direction = light.vector;
-  v.up = light.vector[0] == 0 && light.vector[1] == 0 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+  v.direction = direction;
+  v.up = direction[0] == 0 && direction[1] == 0 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
   return v;
 }
 
@@ -233,10 +236,11 @@ class LightSolver {
               std::size_t light_count, const ShadowOptions& options)
       : meshes_(meshes), model_(model), result_(result), k_(light_index), light_count_(light_count), options_(options) {}
 
-  void run(const Light& light) {
-    const View view = light_view_of(light);
-    const ViewFrame<K> frame(view);
+  // `view`: the light's view (light_view_along, point_light_view).
+  void run(const Light& light, const View& view) {
+    const ViewFrame<K> frame(view, meshes_);
     const Vec3FT d{FT(view.direction[0]), FT(view.direction[1]), FT(view.direction[2])};
+    if (light.kind == Light::point) eye_ = Vec3FT{FT(light.vector[0]), FT(light.vector[1]), FT(light.vector[2])};
     const Vec3FT up{FT(view.up[0]), FT(view.up[1]), FT(view.up[2])};
     // The axes of ViewFrame (the same formulas), each over its squared length: the inverse map.
     const Vec3FT X = cross(d, up), Y = cross(X, d), Z{-d[0], -d[1], -d[2]};
@@ -270,7 +274,9 @@ class LightSolver {
 
     // Facing of every model source, and its slot for this light.
     for (auto& s : model_.sources) {
-      const int side = CGAL::sign(dot(s.normal, d));
+      // Negative where the light is on the front side: directional, the rays travel against the
+      // front normal; point, the light lies in front of the plane (eye-based, as in perspective).
+      const int side = eye_ ? -CGAL::sign(dot(s.normal, *eye_) + s.offset) : CGAL::sign(dot(s.normal, d));
       SourceLight sl;
       sl.facing = side < 0 ? Facing::toward : side == 0 ? Facing::edge_on : Facing::away;
       if (sl.facing != Facing::toward)
@@ -354,6 +360,12 @@ class LightSolver {
   ShadowPoint lift(const P2& q, const DepthPlane<K>& plane) const {
     const FT x = q.x(), y = q.y();
     const FT z = plane.a * x + plane.b * y + plane.c;
+    if (eye_) {
+      // Perspective: (x, y, z) = (X·q, Y·q, 1)/w with q = p − e and w = d·q; Z/|Z|² = −d/|d|².
+      const Vec3FT& e = *eye_;
+      auto at = [&](int i) { return e[i] + (x * inverse_[0][i] + y * inverse_[1][i] - inverse_[2][i]) / z; };
+      return {at(0), at(1), at(2)};
+    }
     return {x * inverse_[0][0] + y * inverse_[1][0] + z * inverse_[2][0],
             x * inverse_[0][1] + y * inverse_[1][1] + z * inverse_[2][1],
             x * inverse_[0][2] + y * inverse_[1][2] + z * inverse_[2][2]};
@@ -545,6 +557,7 @@ class LightSolver {
   std::size_t k_, light_count_;
   const ShadowOptions& options_;
   FT inverse_[3][3];
+  std::optional<Vec3FT> eye_;  // a point light's position
   Sources<K> sources_;
   std::vector<std::uint32_t> model_of_;  // per light-view source: its model source
   std::vector<std::vector<std::pair<clip::Polygon<K>, std::uint32_t>>> lit_view_;  // per model source: lit pieces
@@ -567,14 +580,101 @@ std::optional<std::string> light_defect(const Light& light) {
   for (double c : light.vector)
     if (!std::isfinite(c))
       return light.kind == Light::directional ? "light direction is not finite" : "light position is not finite";
-  if (light.kind == Light::point) return "point lights are not supported yet";
-  if (light.vector == Vec3{0, 0, 0}) return "light direction is zero";
+  if (light.kind == Light::directional && light.vector == Vec3{0, 0, 0}) return "light direction is zero";
   return std::nullopt;
 }
 
+namespace {
+
+// The light view along d if every vertex lies strictly in front of the light (d·(p − e) > 0,
+// exact), with its near plane at a power-of-two fraction of the deepest vertex, at or before the
+// nearest one (so that nothing is clipped).
+std::optional<View> view_if_in_front(const std::vector<Mesh>& meshes, const Vec3& e, const Vec3& d) {
+  if (!std::isfinite(d[0] + d[1] + d[2]) || d == Vec3{0, 0, 0}) return std::nullopt;
+  std::optional<FT> nearest, deepest;
+  for (const Mesh& mesh : meshes)
+    for (const Vec3& p : mesh.vertices) {
+      const FT w = FT(d[0]) * (FT(p[0]) - FT(e[0])) + FT(d[1]) * (FT(p[1]) - FT(e[1])) + FT(d[2]) * (FT(p[2]) - FT(e[2]));
+      if (!CGAL::is_positive(w)) return std::nullopt;
+      if (!nearest || w < *nearest) nearest = w;
+      if (!deepest || *deepest < w) deepest = w;
+    }
+  if (!nearest) return std::nullopt;
+  double fraction = 0.5;
+  while (fraction > 0 && *deepest * FT(fraction) > *nearest) fraction /= 2;
+  if (fraction == 0) return std::nullopt;
+  View view = light_view_along(d);
+  view.eye = e;
+  view.near_fraction = fraction;
+  return view;
+}
+
+}  // namespace
+
+std::optional<View> point_light_view(const std::vector<Mesh>& meshes, const Light& light) {
+  const Vec3& e = light.vector;
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  std::size_t count = 0;
+  double centroid[3] = {0, 0, 0};
+  for (const Mesh& mesh : meshes)
+    for (const Vec3& p : mesh.vertices) {
+      ++count;
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+        centroid[k] += p[k];
+      }
+    }
+  if (count == 0) return std::nullopt;
+  // Directions are only candidates (their rounding is harmless): each is tested exactly.
+  const Vec3 candidates[] = {{lo[0] / 2 + hi[0] / 2 - e[0], lo[1] / 2 + hi[1] / 2 - e[1], lo[2] / 2 + hi[2] / 2 - e[2]},
+                             {0, 0, -1}, {0, 0, 1}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}};
+  for (const Vec3& d : candidates)
+    if (auto view = view_if_in_front(meshes, e, d)) return view;
+  // Otherwise look for the point x of the vertices' convex hull nearest to the light (Frank and
+  // Wolfe's iteration, in double): once every vertex lies beyond the plane through the light
+  // normal to x − e, that direction is tested exactly.
+  Vec3 x{centroid[0] / double(count), centroid[1] / double(count), centroid[2] / double(count)};
+  for (int step = 0; step < 64; ++step) {
+    const Vec3 g{x[0] - e[0], x[1] - e[1], x[2] - e[2]};
+    const Vec3* s = nullptr;
+    double least = HUGE_VAL;
+    for (const Mesh& mesh : meshes)
+      for (const Vec3& p : mesh.vertices) {
+        const double w = g[0] * (p[0] - e[0]) + g[1] * (p[1] - e[1]) + g[2] * (p[2] - e[2]);
+        if (w < least) least = w, s = &p;
+      }
+    if (least > 0)
+      if (auto view = view_if_in_front(meshes, e, g)) return view;
+    // The exact line search toward the vertex s, in double.
+    const Vec3 t{(*s)[0] - x[0], (*s)[1] - x[1], (*s)[2] - x[2]};
+    const double tt = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
+    if (!(tt > 0)) break;
+    const double gamma = std::clamp(-(g[0] * t[0] + g[1] * t[1] + g[2] * t[2]) / tt, 0.0, 1.0);
+    if (gamma == 0) break;
+    for (int k = 0; k < 3; ++k) x[k] += gamma * t[k];
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> point_light_defect(const std::vector<Mesh>& meshes, const Light& light) {
+  if (point_light_view(meshes, light)) return std::nullopt;
+  return "the scene does not lie strictly on one side of any plane through the light that hlr found (the light "
+         "is inside the scene's convex hull, on a face, or just outside it); a light among the geometry is not "
+         "supported";
+}
+
 ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Light>& lights, const ShadowOptions& options) {
-  for (const Light& light : lights)
+  std::vector<View> views;
+  for (const Light& light : lights) {
     if (auto defect = light_defect(light)) throw std::invalid_argument(*defect);
+    if (light.kind == Light::directional) {
+      views.push_back(light_view_along(light.vector));
+    } else if (auto view = point_light_view(meshes, light)) {
+      views.push_back(*view);
+    } else {
+      throw std::invalid_argument(*point_light_defect(meshes, light));
+    }
+  }
   const auto start = Clock::now();
   ShadowResult result;
   options.progress.report("sources of " + std::to_string(meshes.size()) + " mesh(es)");
@@ -585,7 +685,7 @@ ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Lig
   std::vector<std::vector<std::vector<std::vector<clip::Polygon<K>>>>> lit_uv;
   for (std::size_t k = 0; k < lights.size(); ++k) {
     LightSolver solver(meshes, model, result, k, lights.size(), options);
-    solver.run(lights[k]);
+    solver.run(lights[k], views[k]);
     if (options.union_shadows) lit_uv.push_back(std::move(solver.face_lit_uv));
   }
 

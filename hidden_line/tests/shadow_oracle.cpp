@@ -94,7 +94,7 @@ int ShadowOracle::facing(FaceRef f, const V3& d) const {
   return face.side * CGAL::sign(dot(face.normal, d));
 }
 
-RayProbe ShadowOracle::probe(const V3& p, const V3& d) const {
+RayProbe ShadowOracle::probe(const V3& p, const V3& d, bool segment) const {
   RayProbe out;
   std::optional<FT> best;
   // A filter in double only: the ray p - t d (t > 0) can reach a face only if its box, grown
@@ -118,7 +118,7 @@ RayProbe ShadowOracle::probe(const V3& p, const V3& d) const {
       if (CGAL::is_zero(nd)) continue;  // parallel to the light: no shadow of positive area
       // n·(p - t d - c0) = 0
       const FT t = dot(face.normal, sub(p, face.corners[0])) / nd;
-      if (!CGAL::is_positive(t)) continue;
+      if (!CGAL::is_positive(t) || (segment && t >= FT(1))) continue;
       const V3 q{p[0] - t * d[0], p[1] - t * d[1], p[2] - t * d[2]};
       if (locate(face.projected, project(q, face.axis)) < 0) continue;
       out.blocked = true;
@@ -139,8 +139,11 @@ std::vector<std::string> check_shadows(const std::vector<Mesh>& meshes, const st
     if (errors.size() < options.max_errors) errors.push_back(e);
   };
   const ShadowOracle oracle(meshes);
-  std::vector<V3> dirs;
+  std::vector<V3> dirs;  // a directional light's direction, a point light's position
   for (const auto& l : lights) dirs.push_back({FT(l.vector[0]), FT(l.vector[1]), FT(l.vector[2])});
+  auto point = [&](std::size_t k) { return lights[k].kind == hidden_line::Light::point; };
+  // The direction the light travels to q.
+  auto toward = [&](std::size_t k, const V3& q) { return point(k) ? sub(q, dirs[k]) : dirs[k]; };
 
   for (std::size_t si = 0; si < result.sources.size() && errors.size() < options.max_errors; ++si) {
     const auto& s = result.sources[si];
@@ -192,7 +195,7 @@ std::vector<std::string> check_shadows(const std::vector<Mesh>& meshes, const st
     for (std::size_t k = 0; k < lights.size(); ++k) {
       const auto& sl = s.lights[k];
       const std::string at = where + " light " + std::to_string(k);
-      const int side = oracle.facing({s.mesh, s.faces.front()}, dirs[k]);
+      const int side = oracle.facing({s.mesh, s.faces.front()}, toward(k, origin));
       const Facing expected = side < 0 ? Facing::toward : side == 0 ? Facing::edge_on : Facing::away;
       if (sl.facing != expected) {
         fail(at + ": facing " + hidden_line::facing_name(sl.facing) + ", expected " + hidden_line::facing_name(expected));
@@ -209,7 +212,8 @@ std::vector<std::string> check_shadows(const std::vector<Mesh>& meshes, const st
         if (expected != Facing::toward) fail(at + ": lit polygon on a source that does not face the light");
         auto q = sample(p);
         if (!q) fail(at + ": lit polygon without an interior point");
-        else if (oracle.probe(*q, dirs[k]).blocked) fail(at + ": a point inside a lit polygon does not see the light");
+        else if (oracle.probe(*q, toward(k, *q), point(k)).blocked)
+          fail(at + ": a point inside a lit polygon does not see the light");
       }
       if (lit != sl.lit_area2) fail(at + ": lit_area2 is not the lit polygons' area");
       sampled = 0;
@@ -227,7 +231,7 @@ std::vector<std::string> check_shadows(const std::vector<Mesh>& meshes, const st
           fail(at + ": shadow polygon without an interior point");
           continue;
         }
-        const RayProbe probe = oracle.probe(*q, dirs[k]);
+        const RayProbe probe = oracle.probe(*q, toward(k, *q), point(k));
         if (!probe.blocked) {
           fail(at + ": a point inside a shadow polygon sees the light");
           continue;

@@ -6,8 +6,8 @@
 //     the front (outer counter-clockwise, holes clockwise);
 //   - lit + shadow = source, exactly, on areas (projected along the source's largest normal
 //     component, Newell's normal of the faces as read);
-//   - at an exact interior point of every lit polygon the ray toward the light (p - t d, t > 0)
-//     meets no face (faces as closed sets; faces parallel to the light, which cast no shadow of
+//   - at an exact interior point of every lit polygon the ray toward the light (p - t d, t > 0;
+//     a point light at e: the open segment p + t (e - p), 0 < t < 1) meets no face (faces as closed sets; faces parallel to the light, which cast no shadow of
 //     positive area, left out), and the source faces the light; at one of every shadow polygon of
 //     a source that faces the light the ray meets a face, and a face it meets nearest to the light
 //     is in `by`; sources facing away or edge-on have `by` empty;
@@ -36,8 +36,9 @@ struct ShadowCheckOptions {
 std::vector<std::string> check_shadows(const std::vector<Mesh>& meshes, const std::vector<hidden_line::Light>& lights,
                                        const hidden_line::ShadowResult& result, const ShadowCheckOptions& options = {});
 
-// The lit state of a model point under a directional light, by the oracle alone: whether the
-// ray from p toward the light meets a face (nearest: the faces it meets nearest to the light).
+// The lit state of a model point, by the oracle alone: whether the ray from p toward a
+// directional light, or the segment from p to a point light, meets a face (nearest: the faces it
+// meets nearest to the light).
 struct RayProbe {
   bool blocked = false;
   std::vector<FaceRef> nearest;
@@ -45,8 +46,10 @@ struct RayProbe {
 class ShadowOracle {
  public:
   explicit ShadowOracle(const std::vector<Mesh>& meshes);
-  RayProbe probe(const std::array<FT, 3>& p, const std::array<FT, 3>& d) const;
-  // Sign of (front normal · d) of a face: -1 facing the light, 0 edge-on, +1 away.
+  // Along p - t d for t > 0; with `segment`, for 0 < t < 1 only (d = p - e for a light at e).
+  RayProbe probe(const std::array<FT, 3>& p, const std::array<FT, 3>& d, bool segment = false) const;
+  // Sign of (front normal · d) of a face: -1 facing the light, 0 edge-on, +1 away (a point light
+  // at e: d = a corner of the face - e).
   int facing(FaceRef f, const std::array<FT, 3>& d) const;
 
   struct Face {

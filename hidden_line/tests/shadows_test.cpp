@@ -10,7 +10,9 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 namespace hlr::hltest {
@@ -27,6 +29,7 @@ std::vector<Mesh> load(const std::string& path) {
 }
 
 Light sun(double x, double y, double z) { return {Light::directional, {x, y, z}}; }
+Light bulb(double x, double y, double z) { return {Light::point, {x, y, z}}; }
 
 std::string joined(const std::vector<std::string>& errors) {
   std::ostringstream out;
@@ -43,7 +46,7 @@ struct Expected {
 };
 struct AnalyticCase {
   const char* file;
-  Vec3 sun;
+  Light light;
   std::vector<Expected> lit;
   const char* why;
 };
@@ -52,26 +55,42 @@ const std::vector<AnalyticCase>& analytic_cases() {
   static const std::vector<AnalyticCase> cases = {
       // Ground shadow = hull of the 2 x 2 footprint and its translate by 2 (1, 2) / 4 = (1/2, 1):
       // 4 + 3 = 7 (the footprint itself is covered by the box); the sides facing the sun are lit.
-      {"box_on_ground.off", {1, 2, -4}, {{0, 393, 1}, {1, 0, 1}, {2, 4, 1}, {3, 4, 1}, {4, 0, 1}, {5, 0, 1}, {6, 4, 1}},
+      {"box_on_ground.off", sun(1, 2, -4), {{0, 393, 1}, {1, 0, 1}, {2, 4, 1}, {3, 4, 1}, {4, 0, 1}, {5, 0, 1}, {6, 4, 1}},
        "box on a ground plane, oblique sun"},
-      {"box_on_ground.off", {0, 0, -1}, {{0, 396, 1}, {2, 4, 1}, {3, 0, 1}, {4, 0, 1}}, "sun overhead: sides edge-on"},
+      {"box_on_ground.off", sun(0, 0, -1), {{0, 396, 1}, {2, 4, 1}, {3, 0, 1}, {4, 0, 1}}, "sun overhead: sides edge-on"},
       // d = (1, -1, -3): translate 2 (1, -1) / 3; hull area 4 + 2 (2/3 + 2/3) = 20/3.
-      {"box_on_ground.off", {1, -1, -3}, {{0, 1180, 3}, {2, 4, 1}, {3, 0, 1}, {5, 4, 1}, {6, 4, 1}}, "rational shadow area"},
+      {"box_on_ground.off", sun(1, -1, -3), {{0, 1180, 3}, {2, 4, 1}, {3, 0, 1}, {5, 4, 1}, {6, 4, 1}}, "rational shadow area"},
       // Grazing: the ground edge-on (attached shadow), the top edge-on; the face x = 0 lit.
-      {"box_on_ground.off", {1, 0, 0}, {{0, 0, 1}, {2, 0, 1}, {6, 4, 1}}, "sun grazing the ground exactly"},
+      {"box_on_ground.off", sun(1, 0, 0), {{0, 0, 1}, {2, 0, 1}, {6, 4, 1}}, "sun grazing the ground exactly"},
       // Nearly grazing: the shadow, 128 long, leaves the ground at x = 10: 10 x 2 of it.
-      {"box_on_ground.off", {1, 0, -1.0 / 64}, {{0, 380, 1}, {2, 4, 1}, {6, 4, 1}}, "sun 0.9 degrees above the horizon"},
+      {"box_on_ground.off", sun(1, 0, -1.0 / 64), {{0, 380, 1}, {2, 4, 1}, {6, 4, 1}}, "sun 0.9 degrees above the horizon"},
       // Overhang 1 deep at z = 3 over the wall y = 0: a band z in [2, 3] in shadow.
-      {"overhang.off", {0, 1, -1}, {{2, 12, 1}, {6, 4, 1}, {1, 16, 1}, {3, 0, 1}, {5, 0, 1}}, "overhang over a wall"},
+      {"overhang.off", sun(0, 1, -1), {{2, 12, 1}, {6, 4, 1}, {1, 16, 1}, {3, 0, 1}, {5, 0, 1}}, "overhang over a wall"},
       // Oblique: the band's left end slides: shadow area int_2^3 (1 + z) dz = 7/2.
-      {"overhang.off", {1, 1, -1}, {{2, 25, 2}, {6, 4, 1}, {5, 16, 1}}, "overhang, oblique sun"},
+      {"overhang.off", sun(1, 1, -1), {{2, 25, 2}, {6, 4, 1}, {5, 16, 1}}, "overhang, oblique sun"},
       // Ground shadows [-2, 2] x [0, 2] (A) and [-1, 4] x [0, 2] (B) overlap: union 12. B shades
       // A's east face entirely and its top for x > 1.
-      {"two_boxes.off", {-1, 0, -1}, {{0, 388, 1}, {4, 0, 1}, {2, 2, 1}, {10, 8, 1}, {8, 2, 1}}, "two boxes, shadows overlap"},
+      {"two_boxes.off", sun(-1, 0, -1), {{0, 388, 1}, {4, 0, 1}, {2, 2, 1}, {10, 8, 1}, {8, 2, 1}}, "two boxes, shadows overlap"},
       // Found by the property test: the ground is the first front in the rough order and wins the
       // coplanar tie with the triangle, though the box is nearer to the light over both. Ground
       // shadow: 1 + 1 (1 + 1) = 3.
-      {"coplanar_under_box.off", {-1, -1, -1}, {{0, 397, 1}, {7, 0, 1}, {2, 1, 1}}, "coplanar tie under a box"},
+      {"coplanar_under_box.off", sun(-1, -1, -1), {{0, 397, 1}, {7, 0, 1}, {2, 1, 1}}, "coplanar tie under a box"},
+      // Point lights over the box [0, 2]^3: the ground shadow is the top face scaled from the light
+      // onto z = 0 by h / (h - 2) (h the light's height; it contains the footprint). Over the centre at
+      // h = 4: [-1, 3]^2, 16, ground lit 384; the sides face away.
+      {"box_on_ground.off", bulb(1, 1, 4), {{0, 384, 1}, {1, 0, 1}, {2, 4, 1}, {3, 0, 1}, {4, 0, 1}, {5, 0, 1}, {6, 0, 1}},
+       "point light over the box's centre"},
+      // h = 5: scale 5/3, the scaled top (10/3)^2 = 100/9, ground lit 400 - 100/9 = 3500/9.
+      {"box_on_ground.off", bulb(1, 1, 5), {{0, 3500, 9}, {2, 4, 1}}, "point light, rational shadow area"},
+      // From (1, -4, 4) the top projects to p -> 2 p - L: hull of the footprint and the top's image
+      // (0,0) (2,0) (3,4) (3,8) (-1,8) (-1,4), area 28 (the footprint included): ground lit 372;
+      // -y lit.
+      {"box_on_ground.off", bulb(1, -4, 4), {{0, 372, 1}, {2, 4, 1}, {3, 4, 1}, {4, 0, 1}, {5, 0, 1}, {6, 0, 1}},
+       "point light in front of the -y face"},
+      // From (2, -4, 4), in the plane of the +x face: that face is edge-on (attached shadow); hull
+      // (0,0) (2,0) (2,8) (-2,8) (-2,4), area 28: ground lit 372.
+      {"box_on_ground.off", bulb(2, -4, 4), {{0, 372, 1}, {2, 4, 1}, {3, 4, 1}, {4, 0, 1}, {6, 0, 1}},
+       "point light in the plane of a face"},
   };
   return cases;
 }
@@ -82,7 +101,7 @@ TEST(ShadowFixtures, LitAreasAreTheHandComputedFractions) {
   for (const auto& c : analytic_cases()) {
     SCOPED_TRACE(std::string(c.file) + ": " + c.why);
     const auto meshes = load(fixture(c.file));
-    const std::vector<Light> lights{sun(c.sun[0], c.sun[1], c.sun[2])};
+    const std::vector<Light> lights{c.light};
     const ShadowResult r = cast_shadows(meshes, lights);
     for (const auto& e : c.lit) {
       // Every face of these fixtures is axis-aligned: twice its projected area is twice its area.
@@ -134,6 +153,65 @@ TEST(ShadowFixtures, SeveralLightsAreSolvedEachOnItsOwn) {
   EXPECT_TRUE(errors.empty()) << joined(errors);
 }
 
+TEST(ShadowFixtures, PointLightFacingAndCasters) {
+  const auto meshes = load(fixture("box_on_ground.off"));
+  const ShadowResult r = cast_shadows(meshes, {bulb(2, -4, 4)});
+  auto facing = [&](std::uint32_t face) { return r.sources[r.face_source[0][face]].lights[0].facing; };
+  EXPECT_EQ(facing(0), Facing::toward);
+  EXPECT_EQ(facing(2), Facing::toward);    // the top
+  EXPECT_EQ(facing(3), Facing::toward);    // -y
+  EXPECT_EQ(facing(4), Facing::edge_on);   // +x, in whose plane the light is
+  EXPECT_EQ(facing(5), Facing::away);      // +y
+  EXPECT_EQ(facing(1), Facing::away);      // the bottom
+  const auto& ground = r.sources[r.face_source[0][0]].lights[0];
+  ASSERT_FALSE(ground.shadow.empty());
+  for (const auto& s : ground.shadow)
+    for (const auto& [mesh, face] : s.by) EXPECT_TRUE(face == 2 || face == 3) << face;  // the top, -y
+  // The light view is the perspective view from the light, looking down (-Z: the box's centre
+  // direction has ground corners behind it).
+  ASSERT_EQ(r.views.size(), 1u);
+  ASSERT_TRUE(r.views[0].view.eye.has_value());
+  EXPECT_EQ(r.views[0].view.direction, (Vec3{0, 0, -1}));
+}
+
+// A light outside the tetrahedron's slanted face, where only a slanted plane through the light
+// has every vertex on one side (none of the box-centre and axis planes): found by the hull search.
+// The slanted face is wholly lit (twice its area along z: 100), the others face away.
+TEST(ShadowFixtures, PointLightBesideASlantedFace) {
+  Mesh tetra;
+  tetra.file = "tetra";
+  tetra.vertices = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}};
+  tetra.faces = {{1, 2, 3}, {0, 2, 1}, {0, 1, 3}, {0, 3, 2}};
+  tetra.face_index = {0, 1, 2, 3};
+  const std::vector<Mesh> meshes{tetra};
+  const Light light = bulb(4, 4, 4);
+  const auto view = hidden_line::point_light_view(meshes, light);
+  ASSERT_TRUE(view.has_value());
+  EXPECT_NE(view->direction[0], 0.0);  // not an axis
+  const ShadowResult r = cast_shadows(meshes, {light});
+  EXPECT_EQ(r.face_lit_area2[0][0][0], hidden_line::ShadowFT(100));
+  for (std::uint32_t f = 1; f < 4; ++f) EXPECT_EQ(r.face_lit_area2[0][0][f], hidden_line::ShadowFT(0)) << f;
+  const auto errors = check_shadows(meshes, {light}, r);
+  EXPECT_TRUE(errors.empty()) << joined(errors);
+  // In the slanted face's plane (x + y + z = 10, beside the face): edge-on, and still outside.
+  EXPECT_TRUE(hidden_line::point_light_view(meshes, bulb(6, 6, -2)).has_value());
+  // Inside it, or on its face: refused.
+  EXPECT_FALSE(hidden_line::point_light_view(meshes, bulb(1, 1, 1)).has_value());
+  EXPECT_FALSE(hidden_line::point_light_view(meshes, bulb(2, 3, 5)).has_value());
+}
+
+TEST(ShadowFixtures, SunsAndPointLightsTogether) {
+  const auto meshes = load(fixture("box_on_ground.off"));
+  const std::vector<Light> lights{sun(1, 2, -4), bulb(1, 1, 4), sun(0, 0, -1), bulb(1, -4, 4)};
+  const ShadowResult r = cast_shadows(meshes, lights);
+  EXPECT_EQ(r.face_lit_area2[0][0][0], hidden_line::ShadowFT(786));
+  EXPECT_EQ(r.face_lit_area2[1][0][0], hidden_line::ShadowFT(768));
+  EXPECT_EQ(r.face_lit_area2[2][0][0], hidden_line::ShadowFT(792));
+  EXPECT_EQ(r.face_lit_area2[3][0][0], hidden_line::ShadowFT(744));
+  const auto errors = check_shadows(meshes, lights, r);
+  EXPECT_TRUE(errors.empty()) << joined(errors);
+}
+
 TEST(ShadowFixtures, UnionOfShadowsOverTheLights) {
   const auto meshes = load(fixture("box_on_ground.off"));
   // Shadows [0, 4] x [0, 2] and [0, 2] x [0, 4] on the ground: union 8 + 8 - 4 = 12.
@@ -149,23 +227,36 @@ TEST(ShadowFixtures, BadLightsAreRefused) {
   const auto meshes = load(fixture("box_on_ground.off"));
   EXPECT_THROW(cast_shadows(meshes, {sun(0, 0, 0)}), std::invalid_argument);
   EXPECT_THROW(cast_shadows(meshes, {sun(std::nan(""), 0, -1)}), std::invalid_argument);
-  EXPECT_THROW(cast_shadows(meshes, {{Light::point, {0, 0, 10}}}), std::invalid_argument);
+  EXPECT_THROW(cast_shadows(meshes, {bulb(0, std::numeric_limits<double>::infinity(), 10)}), std::invalid_argument);
+  // Point lights that no single perspective view serves: inside the box, on its top face, on the
+  // ground (in its plane, among its vertices), on an edge of the box (the scene's box centre).
+  for (const Light& l : {bulb(1, 1, 1), bulb(1, 1, 2), bulb(5, 5, 0), bulb(0, 0, 1)}) {
+    SCOPED_TRACE(std::to_string(l.vector[0]) + "," + std::to_string(l.vector[1]) + "," + std::to_string(l.vector[2]));
+    EXPECT_TRUE(hidden_line::point_light_defect(meshes, l).has_value());
+    EXPECT_THROW(cast_shadows(meshes, {l}), std::invalid_argument);
+  }
+  // Outside: above everything, and beside it.
+  EXPECT_FALSE(hidden_line::point_light_defect(meshes, bulb(0, 0, 10)).has_value());
+  EXPECT_FALSE(hidden_line::point_light_defect(meshes, bulb(30, 1, 1)).has_value());
 }
 
 // The oracle itself: planted errors are found.
+// The result with the ground's last shadow polygon (face 0 of the box fixture) called lit.
+ShadowResult ground_shadow_called_lit(ShadowResult r) {
+  auto& sl = r.sources[r.face_source[0][0]].lights[0];
+  EXPECT_FALSE(sl.shadow.empty());
+  if (sl.shadow.empty()) return r;
+  sl.lit.push_back(sl.shadow.back().polygon);
+  sl.shadow.pop_back();
+  return r;
+}
+
 TEST(ShadowOracle, FindsPlantedErrors) {
   const auto meshes = load(fixture("box_on_ground.off"));
   const std::vector<Light> lights{sun(1, 2, -4)};
   const ShadowResult good = cast_shadows(meshes, lights);
   ASSERT_TRUE(check_shadows(meshes, lights, good).empty());
-  {  // a shadow polygon called lit
-    ShadowResult bad = good;
-    auto& sl = bad.sources[bad.face_source[0][0]].lights[0];
-    ASSERT_FALSE(sl.shadow.empty());
-    sl.lit.push_back(sl.shadow.back().polygon);
-    sl.shadow.pop_back();
-    EXPECT_FALSE(check_shadows(meshes, lights, bad).empty());
-  }
+  EXPECT_FALSE(check_shadows(meshes, lights, ground_shadow_called_lit(good)).empty());
   {  // a lit polygon dropped
     ShadowResult bad = good;
     auto& sl = bad.sources[bad.face_source[0][0]].lights[0];
@@ -177,6 +268,13 @@ TEST(ShadowOracle, FindsPlantedErrors) {
     for (auto& s : bad.sources[bad.face_source[0][0]].lights[0].shadow) s.by = {{0, 0}};
     EXPECT_FALSE(check_shadows(meshes, lights, bad).empty());
   }
+  {  // a point light's shadow called lit, and the light taken for another
+    const std::vector<Light> bulbs{bulb(1, -4, 4)};
+    const ShadowResult r = cast_shadows(meshes, bulbs);
+    ASSERT_TRUE(check_shadows(meshes, bulbs, r).empty());
+    EXPECT_FALSE(check_shadows(meshes, {bulb(1, 1, 4)}, r).empty());
+    EXPECT_FALSE(check_shadows(meshes, bulbs, ground_shadow_called_lit(r)).empty());
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -186,6 +284,21 @@ const std::vector<Light>& suns() {
   static const std::vector<Light> lights{sun(1, 2, -4), sun(-1, 0.5, -1), sun(0, 0, -1), sun(3, -1, -1),
                                          sun(-1, -1, -1), sun(0.25, 1, 0)};
   return lights;
+}
+
+// Point lights around a scene, all outside it: over its centre, over a corner, beside it at
+// mid-height (on a 1/16 grid, so that the numbers stay small).
+std::vector<Light> point_lights_around(const std::vector<Mesh>& meshes) {
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const auto& m : meshes)
+    for (const auto& p : m.vertices)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  auto grid = [](double v) { return std::round(v * 16) / 16; };
+  auto mid = [&](int k) { return grid((lo[k] + hi[k]) / 2); };
+  return {bulb(mid(0), mid(1), grid(hi[2] + size)),
+          bulb(grid(lo[0] - size / 2), grid(hi[1] + size / 4), grid(hi[2] + size / 3)),
+          bulb(grid(hi[0] + size / 2), mid(1) + 0.25, mid(2) + 0.125)};
 }
 
 TEST(ShadowFixtures, OracleOnEveryFixture) {
@@ -200,6 +313,10 @@ TEST(ShadowFixtures, OracleOnEveryFixture) {
     const ShadowResult r = cast_shadows(meshes, suns());
     const auto errors = check_shadows(meshes, suns(), r);
     EXPECT_TRUE(errors.empty()) << joined(errors);
+    const std::vector<Light> bulbs = point_lights_around(meshes);
+    const ShadowResult rp = cast_shadows(meshes, bulbs);
+    const auto point_errors = check_shadows(meshes, bulbs, rp);
+    EXPECT_TRUE(point_errors.empty()) << "point lights\n" << joined(point_errors);
   }
 }
 
@@ -209,7 +326,8 @@ TEST_P(ShadowScenes, Oracle) {
   const std::string path = std::string(HLR_SHARED_SCENES) + "/" + GetParam();
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
   const auto meshes = load(path);
-  const std::vector<Light> lights{sun(1, 2, -4), sun(-3, 1, -2)};
+  std::vector<Light> lights{sun(1, 2, -4), sun(-3, 1, -2)};
+  lights.push_back(point_lights_around(meshes)[1]);
   const ShadowResult r = cast_shadows(meshes, lights);
   ShadowCheckOptions options;
   options.max_polygons = 2;
@@ -249,12 +367,14 @@ Mesh box_mesh(int x0, int y0, int z0, int x1, int y1, int z1) {
 
 std::string scene_text(const std::vector<Mesh>& meshes, const Light& l) {
   std::ostringstream out;
-  out << "sun (" << l.vector[0] << ", " << l.vector[1] << ", " << l.vector[2] << ")\n";
+  out << (l.kind == Light::point ? "point light (" : "sun (") << l.vector[0] << ", " << l.vector[1] << ", "
+      << l.vector[2] << ")\n";
   for (const auto& m : meshes) out << off_text(m);
   return out.str();
 }
 
-RC_GTEST_PROP(ShadowProperty, OracleAndAreaIdentity, ()) {
+// A ground, a few boxes and a triangle soup, all in [-2, 6] x [-2, 6] x [0, 6].
+std::vector<Mesh> random_scene() {
   std::vector<Mesh> meshes;
   if (*rc::gen::arbitrary<bool>()) {
     Mesh ground;
@@ -277,6 +397,11 @@ RC_GTEST_PROP(ShadowProperty, OracleAndAreaIdentity, ()) {
     soup.share_vertices = *rc::gen::arbitrary<bool>();
     meshes.push_back(to_mesh(soup));
   }
+  return meshes;
+}
+
+RC_GTEST_PROP(ShadowProperty, OracleAndAreaIdentity, ()) {
+  const std::vector<Mesh> meshes = random_scene();
   const int scale = *rc::gen::element(1, 2, 4, 8);
   auto c = rc::gen::inRange(-6, 7);
   const auto d = *rc::gen::suchThat(rc::gen::tuple(c, c, c), [](const auto& t) {
@@ -284,6 +409,22 @@ RC_GTEST_PROP(ShadowProperty, OracleAndAreaIdentity, ()) {
   });
   const Light light = sun(double(std::get<0>(d)) / scale, double(std::get<1>(d)) / scale, double(std::get<2>(d)) / scale);
   RC_TAG(light.vector[2] < 0 ? "sun above" : "sun level or below");
+  const ShadowResult r = cast_shadows(meshes, {light});
+  const auto errors = check_shadows(meshes, {light}, r);
+  if (!errors.empty()) RC_FAIL(joined(errors) + scene_text(meshes, light));
+}
+
+// Random rational point lights around the same scenes: those that a single perspective view
+// serves (point_light_defect: nothing); the others are discarded.
+RC_GTEST_PROP(ShadowProperty, PointLightOracleAndAreaIdentity, ()) {
+  const std::vector<Mesh> meshes = random_scene();
+  const int scale = *rc::gen::element(1, 2, 4);
+  const double x = double(*rc::gen::inRange(-10 * scale, 18 * scale + 1)) / scale;
+  const double y = double(*rc::gen::inRange(-10 * scale, 18 * scale + 1)) / scale;
+  const double z = double(*rc::gen::inRange(-4 * scale, 16 * scale + 1)) / scale;
+  const Light light = bulb(x, y, z);
+  RC_PRE(!hidden_line::point_light_defect(meshes, light).has_value());
+  RC_TAG(z > 6 ? "light above" : "light beside or below");
   const ShadowResult r = cast_shadows(meshes, {light});
   const auto errors = check_shadows(meshes, {light}, r);
   if (!errors.empty()) RC_FAIL(joined(errors) + scene_text(meshes, light));

@@ -909,7 +909,9 @@ TEST_F(CliDraw, BadPerspectiveViewsGiveOneLineAndNoFile) {
   bad({"--eye", "3,3,3"}, "hlr: --eye: give --target");
   bad({"--eye", "3,3,3", "--target", "0,0,0", "--near", "1"}, "hlr: --near:");
   bad({"--eye", "3,3,3", "--target", "0,0,0", "--view", "front"}, "");
-  bad({"--eye", "3,3,3", "--target", "0,0,0", "--sun", "1,1,-1"}, "hlr: --sun is not supported with --eye yet");
+  bad({"--eye", "3,3,3", "--target", "0,0,0", "--sun", "1,1,-1"}, "hlr: --sun 1,1,-1: shadows are not supported with --eye");
+  bad({"--eye", "3,3,3", "--target", "0,0,0", "--point-light", "0,0,9"},
+      "hlr: --point-light 0,0,9: shadows are not supported with --eye");
   expect_failed_run({"sheet", cube, "--eye", "3,3,3", "-o", out("s.svg").string()}, 2,
                     "hlr: --eye is not supported by hlr sheet yet");
 }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,34 @@ TEST_F(CliShadows, WritesJsonCsvAndSvg) {
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
 }
 
+TEST_F(CliShadows, PointLightWritesJsonCsvAndSvg) {
+  // A sun and a point light, each solved on its own; the point light over the box's -y side.
+  const Outcome run = hlr({"shadows", box(), "--sun", "1,2,-4", "--point-light", "1,-4,4", "-o", out("p.json").string(),
+                           "-o", out("p.csv").string(), "-o", out("p.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(outputs(), (std::vector<std::string>{"p.csv", "p.json", "p.svg"}));
+  const json doc = json::parse(slurp(out("p.json")));
+  ASSERT_EQ(doc.at("lights").size(), 2u);
+  EXPECT_EQ(doc.at("lights").at(1), json({{"type", "point"}, {"position", {1.0, -4.0, 4.0}}}));
+  const json& ground = doc.at("sources").at(0).at("lights");
+  EXPECT_EQ(ground.at(0).at("lit_area"), 393.0);
+  EXPECT_EQ(ground.at(1).at("lit_area"), 372.0);  // fixtures/shadows/README.md
+  for (const auto& s : ground.at(1).at("shadow")) {
+    EXPECT_FALSE(s.at("by").empty());
+    for (const auto& p : s.at("outer")) EXPECT_EQ(p.at(2), 0.0);
+  }
+  EXPECT_EQ(doc.at("sources").at(4).at("lights").at(1).at("facing"), "away");  // +x: the light at x = 1
+  std::istringstream csv(slurp(out("p.csv")));
+  std::string header, ground_row;
+  std::getline(csv, header);
+  std::getline(csv, ground_row);
+  EXPECT_EQ(header, "mesh,face,area,lit_area_sun1,sunlit_fraction_sun1,lit_area_point1,sunlit_fraction_point1");
+  EXPECT_EQ(ground_row, "0,0,400.0,393.0,0.9825,372.0,0.93");
+  const std::string svg = slurp(out("p.svg"));
+  EXPECT_NE(svg.find("<g id=\"light-1\">"), std::string::npos);
+  EXPECT_NE(svg.find("point1 at (1.0, -4.0, 4.0)"), std::string::npos);
+}
+
 TEST_F(CliShadows, CsvIsTheGoldenFile) {
   // Regenerate: hlr shadows fixtures/shadows/two_boxes.off --sun -1,0,-1 --sun 1,2,-4 --sun 0,0,-1
   //   --union -o tests/golden/shadows/two_boxes.csv (and review the diff).
@@ -132,7 +161,14 @@ TEST_F(CliShadows, BadInputIsOneLineAndNoFile) {
   expect_failure({"shadows", box(), "--sun", "1,nan,-1", "-o", o}, 2, "hlr: --sun 1,nan,-1: ", "not finite");
   expect_failure({"shadows", box(), "--sun", "1,2", "-o", o}, 2, "hlr: --sun 1,2: ");
   expect_failure({"shadows", box(), "-o", o}, 2, "hlr: ", "no light");
-  expect_failure({"shadows", box(), "--point-light", "0,0,10", "-o", o}, 2, "hlr: --point-light", "not supported yet");
+  // Point lights: non-finite, malformed, and where one perspective view cannot serve: inside the
+  // box, on its top face, in the ground's plane among its corners.
+  expect_failure({"shadows", box(), "--point-light", "0,inf,10", "-o", o}, 2, "hlr: --point-light 0,inf,10: ",
+                 "not finite");
+  expect_failure({"shadows", box(), "--point-light", "0,10", "-o", o}, 2, "hlr: --point-light 0,10: ");
+  for (const std::string inside : {"1,1,1", "1,1,2", "5,5,0"})
+    expect_failure({"shadows", box(), "--sun", "1,2,-4", "--point-light", inside, "-o", o, "-o", out("x.svg").string()},
+                   2, "hlr: --point-light " + inside + ": ", "plane through the light");
   expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "-o", o}, 2, "hlr: --sun-at", "--site");
   expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "--site", "91,0", "-o", o}, 2, "hlr: --site 91,0: ",
                  "latitude");
@@ -188,10 +224,27 @@ TEST_F(CliShadows, DrawWithSunFillsTheShadowsAndIsTheGoldenFile) {
   EXPECT_EQ(slurp(out("p.dxf")).find("SHADOW"), std::string::npos);
 }
 
+TEST_F(CliShadows, DrawWithPointLightFillsTheShadows) {
+  const Outcome run = hlr({"draw", box(), "--view", "top", "--point-light", "1,-4,4", "-o", out("d.svg").string(), "-o",
+                           out("d.dxf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = slurp(out("d.svg")), dxf = slurp(out("d.dxf"));
+  EXPECT_NE(svg.find("<g id=\"shadows\" fill=\"#d1d1d1\" stroke=\"none\""), std::string::npos);
+  EXPECT_NE(dxf.find("SHADOW"), std::string::npos);
+  // Seen from above, the ground's shadow differs from the sun's: not the same drawing.
+  ASSERT_EQ(hlr({"draw", box(), "--view", "top", "--sun", "1,2,-4", "-o", out("s.svg").string()}).exit_code, 0);
+  EXPECT_NE(svg, slurp(out("s.svg")));
+}
+
 TEST_F(CliShadows, DrawSunMistakes) {
   expect_failure({"draw", box(), "--view", "iso", "--sun", "0,0,0", "-o", out("x.svg").string()}, 2, "hlr: --sun 0,0,0: ");
   expect_failure({"draw", box(), "--view", "iso", "--sun", "1,2,-4", "--kernel", "epick", "-o", out("x.svg").string()},
                  2, "hlr: --sun 1,2,-4: ", "exact path only");
+  expect_failure({"draw", box(), "--view", "iso", "--point-light", "1,1,1", "-o", out("x.svg").string()}, 2,
+                 "hlr: --point-light 1,1,1: ", "plane through the light");
+  expect_failure({"draw", box(), "--view", "iso", "--point-light", "1,-4,4", "--raster", "64", "-o",
+                  out("x.svg").string()},
+                 2, "hlr: --point-light 1,-4,4: ", "exact path only");
 }
 
 TEST_F(CliShadows, HelpShowsAnExample) {

@@ -6,7 +6,8 @@
 //   shadows_csv   one row per input face (as the file numbers them; faces the importer split or
 //                 fanned add up): mesh, face, area, and per light the lit area and sunlit
 //                 fraction; with the union, the area in shadow under at least one light;
-//   shadows_svg   the view from each light (the light view, orthonormal frame): what the light
+//   shadows_svg   the view from each light (the light view, orthonormal frame; a point light's
+//                 is its perspective image, x and y at focal length 1): what the light
 //                 sees, lit faces light and faces turned away from it dark, one panel per light.
 //
 // Writers return the document; the caller writes it to disk (atomically).

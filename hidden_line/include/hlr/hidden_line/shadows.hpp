@@ -8,6 +8,12 @@
 // back onto its source's plane in model space by an exact rational map: a light-view point (x, y)
 // on a source whose light-view plane is z = a x + b y + c is the model point
 // p = x X/|X|² + y Y/|Y|² + z Z/|Z|² (X, Y, Z the orthogonal, unnormalized view axes).
+// For a point light at e the light view is the perspective view from e (view.hpp): a light-view
+// point (u, v) on a source whose light-view plane is s = a u + b v + c is the model point
+// p = e + (u X/|X|² + v Y/|Y|² + d/|d|²) / s, rational again. One perspective view sees one half
+// space: a point light is accepted when every vertex of the scene lies strictly in front of a plane
+// through it (point_light_view chooses it, point_light_defect says when none was found); a light
+// among the geometry (a bulb in a room) is refused, not split into several views.
 //
 //   lit     the visible fragments of sources that face the light, and the parts of hidden
 //           fragments hidden only by a coplanar tie: where the visible fragment over them lies
@@ -43,9 +49,19 @@ struct Light {
   Vec3 vector{0, 0, -1};  // directional: the direction the light travels; point: its position
 };
 
-// Why a light cannot be used, or nothing: a zero or non-finite direction, a non-finite position;
-// point lights are not supported yet.
+// Why a light cannot be used, or nothing: a zero or non-finite direction, a non-finite position.
 std::optional<std::string> light_defect(const Light& light);
+
+// The light view of a point light: the perspective view from it, looking along the first of these
+// directions (doubles, taken as exact) that has every vertex of the scene strictly in front of the
+// light, decided exactly: toward the centre of the scene's bounding box, then -Z, +Z, -X, +X, -Y,
+// +Y, then from the light toward the nearest point of the vertices' convex hull (searched in
+// double, up to 64 Frank-Wolfe steps, each candidate tested exactly). Its near plane lies at or
+// before the nearest vertex, so nothing is clipped. Nothing when no direction qualifies (the light
+// inside the convex hull, on a face, or outside it by too little for the search); then
+// point_light_defect says so.
+std::optional<View> point_light_view(const std::vector<Mesh>& meshes, const Light& light);
+std::optional<std::string> point_light_defect(const std::vector<Mesh>& meshes, const Light& light);
 
 using ShadowFT = ExactKernel::FT;
 struct ShadowPoint {
@@ -139,7 +155,8 @@ struct ShadowResult {
 };
 
 // The library's entry point for shadows (as hidden_line/jobs.hpp's for a view): solves every
-// light on its own. Throws std::invalid_argument for a light with a defect, and Cancelled.
+// light on its own. Throws std::invalid_argument for a light with a defect (light_defect,
+// point_light_defect), and Cancelled.
 ShadowResult cast_shadows(const Scene& scene, const std::vector<Light>& lights, const ShadowOptions& options = {});
 ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Light>& lights,
                           const ShadowOptions& options = {});

@@ -97,4 +97,12 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
+OutputFiles::OutputFiles(const std::vector<std::string>& paths) {
+  for (const auto& path : paths) files_.push_back(std::make_unique<AtomicFile>(path));
+}
+
+void OutputFiles::commit() {
+  for (auto& file : files_) file->commit();
+}
+
 }  // namespace hlr::app

@@ -3,8 +3,10 @@
 // temporary file is removed, so a reader never sees a partial or stale output file.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hlr::app {
 
@@ -31,6 +33,19 @@ class AtomicFile {
   std::string temp_path_;
   int fd_ = -1;
   bool committed_ = false;
+};
+
+// Every output of a run: opened together before the work starts, so that a bad path fails fast,
+// and committed together at its end, so that a failed run leaves none of them.
+class OutputFiles {
+ public:
+  explicit OutputFiles(const std::vector<std::string>& paths);
+  AtomicFile& operator[](std::size_t i) { return *files_[i]; }
+  std::size_t size() const { return files_.size(); }
+  void commit();
+
+ private:
+  std::vector<std::unique_ptr<AtomicFile>> files_;
 };
 
 }  // namespace hlr::app

@@ -5,9 +5,8 @@
 // The exact drawing is the reference (docs/STABILITY.md says why, case by case).
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "interrupt.hpp"
 #include "line_options.hpp"
-#include "progress_display.hpp"
+#include "run_scope.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/export/check.hpp>
@@ -41,7 +40,6 @@ std::string number(double v) {
 
 int run(CheckOptions options) {
   const std::optional<View> view = resolve_view(options.scene);
-  const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
   if (options.rasters.empty() && options.kernels.empty()) options.rasters = {1024};
   if (!options.diff.empty() && options.rasters.size() + options.kernels.size() != 1) {
@@ -58,12 +56,11 @@ int run(CheckOptions options) {
     json_file = std::make_unique<AtomicFile>(options.json);
   }
 
-  const Deadline deadline(options.scene.limits.timeout);
-  ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
-  const Scene scene = read_scene(options.scene.meshes, options.scene.limits, options.scene.cad);
+  RunScope run(options.scene.limits, options.scene.threads);
+  const Scene scene = run.read(options.scene.meshes, options.scene.cad);
   check_view_of(scene, *view);
   exporter::DrawOptions job = options.lines;
-  job.progress = display.progress();
+  job.progress = run.progress();
   const exporter::SceneIntersections intersections(scene, job.intersections, job.progress);  // for every method
   const exporter::LineDrawing reference = exporter::draw_lines(scene, *view, job, &intersections);
 
@@ -105,8 +102,7 @@ int run(CheckOptions options) {
   if (json_file) json_file->write(exporter::check_json(report));
   if (diff_file) diff_file->commit();
   if (json_file) json_file->commit();
-  display.stage("");
-  print_warnings(scene);
+  run.finish(scene);
 
   std::cout << "hlr check: " << scene.input.faces << " faces, view " << view->name << ", " << reference.stats.lines
             << " lines, " << number(reference.visible_length() + reference.hidden_length())

@@ -1,8 +1,7 @@
 // `hlr clip SUBJECT.json CLIP.json -o OUT.json [--exact] [--kernel exact|epick|double]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "interrupt.hpp"
-#include "progress_display.hpp"
+#include "run_scope.hpp"
 #include "scene_options.hpp"
 #include "subcommand.hpp"
 
@@ -27,7 +26,7 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 }
 
 int run(const ClipOptions& options) {
-  const Deadline deadline(options.limits.timeout);
+  RunScope run(options.limits);
   const auto subjects = exporter::read_polygons_file(options.subject);
   const auto clips = exporter::read_polygons_file(options.clip);
   exporter::ClipOptions job;
@@ -38,13 +37,12 @@ int run(const ClipOptions& options) {
   job.stop = stop_token();
   // Fail early on an output that cannot be written, before the clipping work.
   AtomicFile output(options.output);
-  ProgressDisplay display(ProgressDisplay::mode_for(options.limits.progress));
-  display.stage("clipping " + plural(subjects.size(), "subject polygon", "subject polygons") + " by " +
+  run.stage("clipping " + plural(subjects.size(), "subject polygon", "subject polygons") + " by " +
                 plural(clips.size(), "clip polygon", "clip polygons"));
   const exporter::ClipOutcome outcome = exporter::clip_polygons(subjects, clips, job);
   output.write(exporter::clip_json(outcome));
   output.commit();
-  display.stage("");
+  run.finish();
 
   using exporter::number_text;
   std::cout << "hlr clip: " << plural(outcome.subjects, "subject polygon", "subject polygons") << ", "

@@ -2,10 +2,9 @@
 //            options: style_options.hpp] [--kernel exact|epick|double | --raster N [--dash arc|paper]]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "interrupt.hpp"
 #include "light_options.hpp"
 #include "line_options.hpp"
-#include "progress_display.hpp"
+#include "run_scope.hpp"
 #include "style_options.hpp"
 #include "subcommand.hpp"
 
@@ -58,14 +57,10 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
     if (formats.back() == Format::png && options.raster == 0)
       throw UserError(out, "a PNG is drawn by the raster path: add --raster N (pixels, such as 2048)");
   }
-  std::vector<std::unique_ptr<AtomicFile>> files;
-  for (const auto& out : options.outputs) files.push_back(std::make_unique<AtomicFile>(out));
+  OutputFiles files(options.outputs);
 
-  const Deadline deadline(options.scene.limits.timeout);
-  ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
-  display.stage("reading " + std::to_string(options.scene.meshes.size()) +
-                (options.scene.meshes.size() == 1 ? " mesh" : " meshes"));
-  const Scene scene = read_scene(options.scene.meshes, options.scene.limits, options.scene.cad);
+  RunScope run(options.scene.limits, options.scene.threads);
+  const Scene scene = run.read(options.scene.meshes, options.scene.cad);
   check_view_of(scene, view);
   const double read = seconds_since(start);
   exporter::DrawOptions job = options.lines;
@@ -75,7 +70,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   if (!job.shadow_lights.empty() && (kind != KernelKind::exact || options.raster > 0))
     throw UsageError(options.first_light() + ": shadows are drawn by the exact path only");
   check_point_lights(scene.meshes, options.point_lights);
-  job.progress = display.progress();
+  job.progress = run.progress();
   job.free_at_exit = true;  // the run ends with the outputs
   exporter::RasterRun raster;
   exporter::LineDrawing drawing;
@@ -114,28 +109,27 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   drawing.merge_distance_mm = style.merge_distance;
   drawing.contact_segments = sheet.merged.contact;
   drawing.contact_degrees = style.contact_degrees;
-  display.stage("writing " + std::to_string(files.size()) + (files.size() == 1 ? " output" : " outputs"));
+  run.stage("writing " + std::to_string(files.size()) + (files.size() == 1 ? " output" : " outputs"));
   for (const bool json : {false, true}) {
     for (std::size_t i = 0; i < files.size(); ++i) {
       if ((formats[i] == Format::json) != json) continue;
       switch (formats[i]) {
         case Format::json:
-          exporter::write_lines_json(drawing, [&](std::string_view text) { files[i]->write(text); }, write_seconds);
+          exporter::write_lines_json(drawing, [&](std::string_view text) { files[i].write(text); }, write_seconds);
           break;
-        case Format::svg: files[i]->write(exporter::lines_svg(drawing, style, sheet)); break;
-        case Format::pdf: files[i]->write(exporter::lines_pdf(drawing, style, sheet)); break;
-        case Format::dxf: files[i]->write(exporter::lines_dxf(drawing, style, sheet)); break;
+        case Format::svg: files[i].write(exporter::lines_svg(drawing, style, sheet)); break;
+        case Format::pdf: files[i].write(exporter::lines_pdf(drawing, style, sheet)); break;
+        case Format::dxf: files[i].write(exporter::lines_dxf(drawing, style, sheet)); break;
         case Format::png:
-          files[i]->write(exporter::png_document(raster.raster->pbuffer(
+          files[i].write(exporter::png_document(raster.raster->pbuffer(
               options.dash == "paper" ? hidden_line::DashPattern::paper : hidden_line::DashPattern::arc_length)));
           break;
       }
     }
   }
-  for (auto& file : files) file->commit();
+  files.commit();
   const double written = write_seconds();
-  display.stage("");
-  print_warnings(scene);
+  run.finish(scene);
 
   const auto& st = drawing.stats;
   auto kind_count = [&](FeatureKind k) { return st.by_kind[static_cast<int>(k)]; };
@@ -168,7 +162,6 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
 
 int run(const DrawOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
-  const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
   if (view->eye && options.lights()) {
     std::cerr << "hlr: " << options.first_light()

@@ -8,8 +8,7 @@
 // ASCII (binary STL would round to float32). Several parts go into one file, one after the other.
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "interrupt.hpp"
-#include "progress_display.hpp"
+#include "run_scope.hpp"
 #include "scene_options.hpp"
 #include "subcommand.hpp"
 
@@ -181,11 +180,9 @@ std::string document(const Scene& scene, Format format, const std::vector<std::s
 int run(const MeshOptions& options) {
   const Format format = format_of(options.output);
   AtomicFile file(options.output);
-  const Deadline deadline(options.limits.timeout);
-  ProgressDisplay display(ProgressDisplay::mode_for(options.limits.progress));
-  display.stage("reading " + std::to_string(options.inputs.size()) + (options.inputs.size() == 1 ? " model" : " models"));
-  const Scene scene = read_scene(options.inputs, options.limits, options.cad);
-  display.stage("writing " + options.output);
+  RunScope run(options.limits);
+  const Scene scene = run.read(options.inputs, options.cad, "model");
+  run.stage("writing " + options.output);
   // Part names as the drawings name them: the source's, else the file's stem.
   std::vector<std::string> parts;
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -204,8 +201,7 @@ int run(const MeshOptions& options) {
     throw UserError(options.output, "more than 2^24 face groups: OFF and PLY colours cannot tell them apart");
   file.write(document(scene, format, parts));
   file.commit();
-  display.stage("");
-  print_warnings(scene);
+  run.finish(scene);
   std::cout << "hlr mesh: " << scene.meshes.size() << (scene.meshes.size() == 1 ? " part, " : " parts, ") << flat.faces
             << " faces, " << flat.vertices << " vertices\n"
             << "wrote " << options.output << '\n';

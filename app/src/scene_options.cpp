@@ -47,10 +47,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel) {
       ->check(CLI::Range(0.0, 1.0))
       ->needs(eye)
       ->type_name("F");
-  cmd.add_option("--threads", options.threads, "threads to use (0: every core); the output is the same for any number")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str()
-      ->type_name("N");
+  add_threads_option(cmd, options.threads);
   if (kernel) add_kernel_option(cmd, options.kernel);
   add_limit_options(cmd, options.limits);
   add_cad_options(cmd, options.cad);
@@ -92,10 +89,11 @@ void add_limit_options(CLI::App& cmd, RunLimits& limits, bool faces) {
                "one line per stage on stderr even when it is not a terminal (a terminal shows one live line)");
 }
 
-std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options) {
-  if (options.threads <= 0) return nullptr;
-  return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                               static_cast<std::size_t>(options.threads));
+void add_threads_option(CLI::App& cmd, int& threads) {
+  cmd.add_option("--threads", threads, "threads to use (0: every core); the output is the same for any number")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str()
+      ->type_name("N");
 }
 
 namespace {

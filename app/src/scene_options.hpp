@@ -52,9 +52,8 @@ inline constexpr const char* kInputKinds = "mesh files (OFF, OBJ, STL, PLY) or C
 // CAD options and, unless `kernel` is false, --kernel.
 void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel = true);
 
-// Limits oneTBB to options.threads for as long as the returned object lives (0: no limit). The
-// output does not depend on it.
-std::unique_ptr<tbb::global_control> thread_limit(const SceneOptions& options);
+// --threads N, 0 to 1024 (0: every core).
+void add_threads_option(CLI::App& cmd, int& threads);
 
 // The view the options name, or nothing after a one-line usage error on stderr.
 std::optional<View> resolve_view(const SceneOptions& options);

@@ -3,9 +3,8 @@
 //  -o OUT.json|OUT.csv|OUT.svg`: the options, then hidden_line::cast_shadows, then the writers.
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "interrupt.hpp"
 #include "light_options.hpp"
-#include "progress_display.hpp"
+#include "run_scope.hpp"
 #include "scene_options.hpp"
 #include "subcommand.hpp"
 
@@ -95,13 +94,10 @@ int run(const ShadowsOptions& options) {
   std::vector<Format> formats;
   for (const auto& out : options.outputs) formats.push_back(format_of(out));
   const Lights lights = resolve_lights(options);
-  SceneOptions scene_options;
-  scene_options.threads = options.threads;
-  const auto threads = thread_limit(scene_options);
+  OutputFiles files(options.outputs);
 
-  const Deadline deadline(options.limits.timeout);
-  ProgressDisplay display(ProgressDisplay::mode_for(options.limits.progress));
-  const Scene scene = read_scene(options.meshes, options.limits, options.cad);
+  RunScope run(options.limits, options.threads);
+  const Scene scene = run.read(options.meshes, options.cad);
   const auto& input = scene.input;
   const double read = seconds_since(start);
   check_point_lights(scene.meshes, options.point_lights);
@@ -109,19 +105,16 @@ int run(const ShadowsOptions& options) {
   hidden_line::ShadowOptions shadow_options;
   shadow_options.union_shadows = options.union_shadows;
   shadow_options.light_views = std::find(formats.begin(), formats.end(), Format::svg) != formats.end();
-  shadow_options.progress = display.progress();
+  shadow_options.progress = run.progress();
   const hidden_line::ShadowResult result = hidden_line::cast_shadows(scene, lights.lights, shadow_options);
 
   const exporter::ShadowsDocument doc{input, scene.meshes, lights.lights, lights.labels, result, read};
-  for (std::size_t i = 0; i < options.outputs.size(); ++i) {
-    AtomicFile file(options.outputs[i]);
-    file.write(formats[i] == Format::json  ? exporter::shadows_json(doc)
-               : formats[i] == Format::csv ? exporter::shadows_csv(doc)
-                                           : exporter::shadows_svg(doc));
-    file.commit();
-  }
-  display.stage("");
-  print_warnings(scene);
+  for (std::size_t i = 0; i < files.size(); ++i)
+    files[i].write(formats[i] == Format::json  ? exporter::shadows_json(doc)
+                   : formats[i] == Format::csv ? exporter::shadows_csv(doc)
+                                               : exporter::shadows_svg(doc));
+  files.commit();
+  run.finish(scene);
   double area = 0, lit = 0;
   for (const auto& s : result.sources) {
     area += s.area * double(lights.lights.size());
@@ -166,9 +159,7 @@ Subcommand add_shadows_command(CLI::App& parent) {
                   "each light); may be given several times")
       ->required()
       ->type_name("OUT");
-  cmd->add_option("--threads", options->threads, "threads to use (0: every core); the output is the same for any number")
-      ->capture_default_str()
-      ->type_name("N");
+  add_threads_option(*cmd, options->threads);
   add_limit_options(*cmd, options->limits);
   add_cad_options(*cmd, options->cad);
   cmd->footer(

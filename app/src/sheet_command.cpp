@@ -7,9 +7,8 @@
 // by the export library (hlr/export/sheet.hpp) and written in every format asked for.
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "interrupt.hpp"
 #include "line_options.hpp"
-#include "progress_display.hpp"
+#include "run_scope.hpp"
 #include "style_options.hpp"
 #include "subcommand.hpp"
 
@@ -85,9 +84,6 @@ std::optional<std::vector<View>> resolve_views(const SheetOptions& options) {
 }
 
 int run(const SheetOptions& options) {
-  SceneOptions scene_options;
-  scene_options.threads = options.threads;
-  const auto threads = thread_limit(scene_options);
   if (!options.eye.empty()) {
     std::cerr << "hlr: --eye is not supported by hlr sheet yet (draw a perspective view with hlr draw --eye)" << std::endl;
     return kExitUsage;
@@ -103,21 +99,18 @@ int run(const SheetOptions& options) {
   std::vector<Format> formats;
   for (const auto& out : options.outputs) formats.push_back(format_of(out));
   // Every output is opened before the work starts and all are committed together at the end.
-  std::vector<std::unique_ptr<AtomicFile>> files;
-  for (const auto& out : options.outputs) files.push_back(std::make_unique<AtomicFile>(out));
+  OutputFiles files(options.outputs);
 
-  const Deadline deadline(options.limits.timeout);
-  ProgressDisplay display(ProgressDisplay::mode_for(options.limits.progress));
-  display.stage("reading " + std::to_string(options.meshes.size()) + (options.meshes.size() == 1 ? " mesh" : " meshes"));
-  const Scene scene = read_scene(options.meshes, options.limits, options.cad);
+  RunScope run(options.limits, options.threads);
+  const Scene scene = run.read(options.meshes, options.cad);
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;
-  job.progress = display.progress();
+  job.progress = run.progress();
   const exporter::SceneIntersections intersections(scene, job.intersections, job.progress);  // found once, for all views
   std::vector<exporter::LineDrawing> drawings;
   drawings.reserve(views->size());
   for (std::size_t i = 0; i < views->size(); ++i) {
-    display.stage("view " + (*views)[i].name + " (" + std::to_string(i + 1) + " of " + std::to_string(views->size()) + ")");
+    run.stage("view " + (*views)[i].name + " (" + std::to_string(i + 1) + " of " + std::to_string(views->size()) + ")");
     drawings.push_back(exporter::draw_lines(scene, (*views)[i], job, &intersections));
   }
   const double solved = seconds_since(start);
@@ -137,12 +130,12 @@ int run(const SheetOptions& options) {
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
     switch (formats[i]) {
-      case Format::svg: files[i]->write(exporter::sheet_svg(layout, spec)); break;
-      case Format::pdf: files[i]->write(exporter::sheet_pdf(layout, spec)); break;
-      case Format::dxf: files[i]->write(exporter::sheet_dxf(layout, spec)); break;
+      case Format::svg: files[i].write(exporter::sheet_svg(layout, spec)); break;
+      case Format::pdf: files[i].write(exporter::sheet_pdf(layout, spec)); break;
+      case Format::dxf: files[i].write(exporter::sheet_dxf(layout, spec)); break;
     }
   }
-  for (auto& file : files) file->commit();
+  files.commit();
   const double written = seconds_since(write_start);
 
   std::cout << "hlr sheet: " << scene.input.faces << " faces, " << views->size() << " views, "
@@ -156,8 +149,7 @@ int run(const SheetOptions& options) {
   }
   std::cout << "  outputs written in " << written << " s (" << solved + written << " s in all)\n";
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
-  display.stage("");
-  print_warnings(scene);
+  run.finish(scene);
   return kExitOk;
 }
 
@@ -207,10 +199,7 @@ Subcommand add_sheet_command(CLI::App& parent) {
   cmd->add_option("--date", options->fields.date, "title block: date of issue")->type_name("TEXT");
   cmd->add_option("--revision", options->fields.revision, "title block: revision")->type_name("TEXT");
   add_kernel_option(*cmd, options->kernel);
-  cmd->add_option("--threads", options->threads, "threads to use (0: every core); the output is the same for any number")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str()
-      ->type_name("N");
+  add_threads_option(*cmd, options->threads);
   cmd->footer(
       "Example:\n"
       "  hlr sheet fixtures/parts/flange.off --views front,top,right,iso --projection first --sheet A3 \\\n"

@@ -1,8 +1,7 @@
 // `hlr surfaces MESH... --view V -o OUT.json|OUT.svg [--kernel exact|epick|double] [--exact]`
 #include "atomic_file.hpp"
 #include "errors.hpp"
-#include "interrupt.hpp"
-#include "progress_display.hpp"
+#include "run_scope.hpp"
 #include "scene_options.hpp"
 #include "subcommand.hpp"
 
@@ -38,24 +37,22 @@ int solve(const SurfacesOptions& options, const View& view) {
   std::vector<Format> formats;
   for (const auto& out : options.outputs) formats.push_back(format_of(out));
 
-  const Deadline deadline(options.scene.limits.timeout);
-  ProgressDisplay display(ProgressDisplay::mode_for(options.scene.limits.progress));
-  const Scene scene = read_scene(options.scene.meshes, options.scene.limits, options.scene.cad);
+  OutputFiles files(options.outputs);
+
+  RunScope run(options.scene.limits, options.scene.threads);
+  const Scene scene = run.read(options.scene.meshes, options.scene.cad);
   check_view_of(scene, view);
   exporter::SurfacesOptions job;
   parse_kernel_kind(options.scene.kernel, job.kernel);
   job.sources.remove_back_faces = !options.keep_back_faces;
   job.sources.consolidate = !options.no_consolidation;
-  job.progress = display.progress();
+  job.progress = run.progress();
   const exporter::SurfacesSolution solution = exporter::solve_surfaces(scene, view, job, seconds_since(start));
 
-  for (std::size_t i = 0; i < options.outputs.size(); ++i) {
-    AtomicFile file(options.outputs[i]);
-    file.write(formats[i] == Format::json ? solution.json(options.exact) : solution.svg());
-    file.commit();
-  }
-  display.stage("");
-  print_warnings(scene);
+  for (std::size_t i = 0; i < files.size(); ++i)
+    files[i].write(formats[i] == Format::json ? solution.json(options.exact) : solution.svg());
+  files.commit();
+  run.finish(scene);
   const auto& st = solution.summary().sources;
   const auto& sort = solution.summary().sort;
   std::cout << "hlr surfaces: " << scene.input.faces << " faces, view " << view.name << ", kernel "
@@ -72,7 +69,6 @@ int solve(const SurfacesOptions& options, const View& view) {
 
 int run(const SurfacesOptions& options) {
   const std::optional<View> view = resolve_view(options.scene);
-  const auto threads = thread_limit(options.scene);
   if (!view) return kExitUsage;
   return solve(options, *view);
 }

@@ -17,6 +17,8 @@ using nlohmann::json;
 using hidden_line::Facing;
 using hidden_line::ShadowPoint;
 using hidden_line::ShadowPolygon;
+// Output in double: unit normals and shading, a picture and a measure, never a decision.
+constexpr auto rough = &Geometry<ExactKernel>::rough_double;
 
 double rounded(const hidden_line::ShadowFT& v) { return Geometry<ExactKernel>::to_double(v) + 0.0; }
 
@@ -77,9 +79,9 @@ std::string shadows_json(const ShadowsDocument& doc) {
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     js["faces"] = faces;
-    const double n[3] = {CGAL::to_double(s.normal[0]), CGAL::to_double(s.normal[1]), CGAL::to_double(s.normal[2])};
+    const double n[3] = {rough(s.normal[0]), rough(s.normal[1]), rough(s.normal[2])};
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    js["plane"] = {n[0] / len + 0.0, n[1] / len + 0.0, n[2] / len + 0.0, CGAL::to_double(s.offset) / len + 0.0};
+    js["plane"] = {n[0] / len + 0.0, n[1] / len + 0.0, n[2] / len + 0.0, rough(s.offset) / len + 0.0};
     js["area"] = s.area;
     json per_light = json::array();
     for (const auto& sl : s.lights) {
@@ -206,7 +208,7 @@ std::string shadows_svg(const ShadowsDocument& doc) {
       if (!point) return v.view.direction;
       const auto& q = doc.result.sources[source].polygons.front().outer.front();
       const auto& e = doc.lights[k].vector;
-      return {CGAL::to_double(q.x) - e[0], CGAL::to_double(q.y) - e[1], CGAL::to_double(q.z) - e[2]};
+      return {rough(q.x) - e[0], rough(q.y) - e[1], rough(q.z) - e[2]};
     };
     for (int pass = 0; pass < 2; ++pass) {
       const bool lit = pass == 1;
@@ -221,7 +223,7 @@ std::string shadows_svg(const ShadowsDocument& doc) {
           const auto& n = doc.result.sources[p.source].normal;
           const auto d = light_direction(p.source);
           const double dl = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-          const double nx = CGAL::to_double(n[0]), ny = CGAL::to_double(n[1]), nz = CGAL::to_double(n[2]);
+          const double nx = rough(n[0]), ny = rough(n[1]), nz = rough(n[2]);
           const double cosine = std::clamp(-(nx * d[0] + ny * d[1] + nz * d[2]) / (dl * std::sqrt(nx * nx + ny * ny + nz * nz)), 0.0, 1.0);
           const int red = int(200 + 55 * cosine), green = int(160 + 80 * cosine), blue = int(90 + 80 * cosine);
           out += " fill=\"rgb(" + std::to_string(red) + ',' + std::to_string(green) + ',' + std::to_string(blue) + ")\"";

@@ -13,11 +13,10 @@
 #include "sources_impl.hpp"
 
 #include <hlr/hidden_line/lines.hpp>
+#include <hlr/kernel/filtered_sign.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
-#include <CGAL/Exact_rational.h>
-#include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -36,6 +35,7 @@ namespace {
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 using IK = CGAL::Exact_predicates_inexact_constructions_kernel;  // predicates on input doubles only
 using FT = EK::FT;
+using G = Geometry<ExactKernel>;
 
 struct FaceRef {
   std::uint32_t mesh, face;
@@ -58,7 +58,7 @@ std::vector<Interval> interior_intervals(const Mesh& mesh, const std::vector<std
   // Drop the axis of the normal's largest component: the projection is one-to-one on the plane.
   int drop = 0;
   for (int k = 1; k < 3; ++k)
-    if (std::abs(CGAL::to_double(normal[k])) > std::abs(CGAL::to_double(normal[drop]))) drop = k;
+    if (std::abs(G::rough_double(normal[k])) > std::abs(G::rough_double(normal[drop]))) drop = k;
   if (CGAL::is_zero(normal[drop]))
     for (int k = 0; k < 3; ++k)
       if (!CGAL::is_zero(normal[k])) drop = k;
@@ -96,9 +96,9 @@ bool straddles(const Mesh& mesh_g, const std::vector<std::uint32_t>& g, const st
 // both) exactly when the rays agree, that is when q, the point where f1 f2 meets g's plane, lies
 // strictly on g2's side of the line v g1 within g's plane. With u = g1 - v, n = u x (g2 - v),
 // d(x) = (x - v).n and h(x) = (u x (x - v)).n, that is sign((d1 h(f2) - d2 h(f1)) / (d1 - d2)) > 0.
-// Evaluated in interval arithmetic, and exactly (rationals) only when the intervals cannot decide.
+// For any number type: kernel's filtered_sign evaluates it.
 template <class NT>
-CGAL::Uncertain<CGAL::Sign> shared_corner_sign(const Vec3& v, const Vec3& f1, const Vec3& f2, const Vec3& g1,
+auto shared_corner_sign(const Vec3& v, const Vec3& f1, const Vec3& f2, const Vec3& g1,
                                               const Vec3& g2) {
   using V = std::array<NT, 3>;
   // Explicit result types: gmpxx's expression templates must not outlive a lambda's temporaries.
@@ -116,12 +116,9 @@ CGAL::Uncertain<CGAL::Sign> shared_corner_sign(const Vec3& v, const Vec3& f1, co
 }
 
 bool crosses_at_shared_corner(const Vec3& v, const Vec3& f1, const Vec3& f2, const Vec3& g1, const Vec3& g2) {
-  {
-    CGAL::Protect_FPU_rounding<true> protect;
-    const auto s = shared_corner_sign<CGAL::Interval_nt<false>>(v, f1, f2, g1, g2);
-    if (CGAL::is_certain(s)) return CGAL::get_certain(s) == CGAL::POSITIVE;
-  }
-  return shared_corner_sign<CGAL::Exact_rational>(v, f1, f2, g1, g2) == CGAL::POSITIVE;
+  return filtered_sign([&](auto nt) {
+           return shared_corner_sign<typename decltype(nt)::type>(v, f1, f2, g1, g2);
+         }) == CGAL::POSITIVE;
 }
 
 }  // namespace
@@ -129,8 +126,8 @@ bool crosses_at_shared_corner(const Vec3& v, const Vec3& f1, const Vec3& f2, con
 namespace {
 // The angle between two planes with these normals, in degrees in [0, 90], in double (output only).
 double angle_between(const EK::Vector_3& n, const EK::Vector_3& m) {
-  const double a[3] = {CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())};
-  const double b[3] = {CGAL::to_double(m.x()), CGAL::to_double(m.y()), CGAL::to_double(m.z())};
+  const double a[3] = {G::rough_double(n.x()), G::rough_double(n.y()), G::rough_double(n.z())};
+  const double b[3] = {G::rough_double(m.x()), G::rough_double(m.y()), G::rough_double(m.z())};
   const double cross = std::hypot(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
   const double dot = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
   return std::atan2(cross, dot) * 180 / std::numbers::pi;

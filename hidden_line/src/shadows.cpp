@@ -62,8 +62,8 @@ int largest_axis(const Vec3FT& n) {
 // Model area from twice the area projected along `axis`: times |n| / |n_axis|, in double.
 double area_factor(const Vec3FT& n, int axis) {
   double sq = 0;
-  for (const FT& c : n) sq += CGAL::to_double(c) * CGAL::to_double(c);
-  return std::sqrt(sq) / std::abs(CGAL::to_double(n[axis]));
+  for (const FT& c : n) sq += G::rough_double(c) * G::rough_double(c);
+  return std::sqrt(sq) / std::abs(G::rough_double(n[axis]));
 }
 
 // Twice the signed area of a contour's projection along `axis` (counter-clockwise seen from +axis

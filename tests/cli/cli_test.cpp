@@ -637,7 +637,9 @@ TEST_F(CliSurfaces, BadMeshesAndOutputsGiveOneLineAndNoFile) {
   for (const Case& c : {Case{truncated, out("t.json").string(), truncated}, Case{missing, out("m.json").string(), missing},
                         Case{cube, out("x.txt").string(), out("x.txt").string()},
                         Case{cube, (dir_ / "no" / "dir" / "x.svg").string(), (dir_ / "no" / "dir" / "x.svg").string()}}) {
-    Outcome run = hlr({"surfaces", c.mesh, "-o", c.output});
+    // A good output beside the bad one: every output is opened before the solve, and a failed run
+    // writes none of them.
+    Outcome run = hlr({"surfaces", c.mesh, "-o", out("good.json").string(), "-o", c.output});
     EXPECT_EQ(run.exit_code, 1) << c.mesh << " -> " << c.output;
     EXPECT_EQ(count_lines(run.err), 1u) << run.err;
     EXPECT_EQ(run.err.rfind("hlr: " + c.named + ": ", 0), 0u) << run.err;

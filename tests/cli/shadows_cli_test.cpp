@@ -185,6 +185,12 @@ TEST_F(CliShadows, BadInputIsOneLineAndNoFile) {
   expect_failure({"shadows", box(), "--sun", "1,2,-4", "-o", out("x.txt").string()}, 1, "hlr: " + out("x.txt").string());
   expect_failure({"shadows", (dir_ / "missing.off").string(), "--sun", "1,2,-4", "-o", o}, 1,
                  "hlr: " + (dir_ / "missing.off").string());
+  // Every output is opened before the lights are solved: one that cannot be written stops the run
+  // at once, and the others are not written either.
+  const std::string unwritable = (dir_ / "no-such-dir" / "x.csv").string();
+  expect_failure({"shadows", box(), "--sun", "1,2,-4", "-o", o, "-o", unwritable}, 1, "hlr: " + unwritable,
+                 "cannot write");
+  expect_failure({"shadows", box(), "--sun", "1,2,-4", "--threads", "-1", "-o", o}, 2, "hlr: ", "--threads");
 }
 
 TEST_F(CliShadows, OneThreadAndTwoGiveTheSameResult) {

@@ -2,11 +2,11 @@
 // and go), line classification and precedence. Queries do not change it, so threads may share it.
 //
 // A loose multi-level grid: level l splits the domain into 2^l x 2^l cells, and a box is filed once,
-// at the finest level whose cells are at least as large as the box, in the cell of its lower-left
-// corner; so inserting costs O(1) whatever the box's size, and a query looks at the cells of each
-// level that can hold a box reaching into it. Boxes are conservative (interval bounds of exact
-// points) and the cell arithmetic keeps a cell of slack on the low side, so a query never misses a
-// box that overlaps; it only filters, it decides nothing.
+// at the finest level whose cells are at least as large as the box, in the cell of its centre; so
+// inserting costs O(1) whatever the box's size, and a query looks at the cells of each level that
+// can hold a box reaching into it (its own, widened by three quarters of a cell). Boxes are
+// conservative (interval bounds of exact points) and the widening leaves room for rounding, so a
+// query never misses a box that overlaps; it only filters, it decides nothing.
 #pragma once
 
 #include <hlr/clipper/clipper.hpp>
@@ -37,24 +37,32 @@ class LooseGrid {
     // About one finest cell per box, at most 2^10 x 2^10.
     while (levels_ < 11 && (std::size_t(1) << (2 * (levels_ - 1))) < expected) ++levels_;
     for (int l = 0; l < levels_; ++l) cells_.emplace_back(std::size_t(1) << (2 * l));
+    // A few ulps of the domain's coordinates: what rounding may move a box's centre by.
+    slack_x_ = 1e-15 * (std::abs(domain_.xmin()) + std::abs(domain_.xmax()));
+    slack_y_ = 1e-15 * (std::abs(domain_.ymin()) + std::abs(domain_.ymax()));
   }
 
+  // Files the box at the finest level whose cells are as wide and as high as it, in the cell of
+  // its centre.
   void insert(std::uint32_t id, const CGAL::Bbox_2& box) {
     if (id >= boxes_.size()) boxes_.resize(id + 1);
     boxes_[id] = box;
     int l = levels_ - 1;
     while (l > 0 && (box.xmax() - box.xmin() > cell_w(l) || box.ymax() - box.ymin() > cell_h(l))) --l;
-    cells_[l][index(l, cell(box.xmin(), domain_.xmin(), cell_w(l), l), cell(box.ymin(), domain_.ymin(), cell_h(l), l))]
-        .push_back(id);
+    const double cx = box.xmin() + (box.xmax() - box.xmin()) / 2, cy = box.ymin() + (box.ymax() - box.ymin()) / 2;
+    cells_[l][index(l, cell(cx, domain_.xmin(), cell_w(l), l), cell(cy, domain_.ymin(), cell_h(l), l))].push_back(id);
   }
 
   // Calls visit(id) for every inserted id whose box overlaps `box` (each id once).
   template <class Visit>
   void query(const CGAL::Bbox_2& box, Visit&& visit) const {
     for (int l = 0; l < levels_; ++l) {
-      const double w = cell_w(l), h = cell_h(l);
-      const long x0 = cell(box.xmin() - 3 * w, domain_.xmin(), w, l), x1 = cell(box.xmax(), domain_.xmin(), w, l);
-      const long y0 = cell(box.ymin() - 3 * h, domain_.ymin(), h, l), y1 = cell(box.ymax(), domain_.ymin(), h, l);
+      // A box filed at level l that overlaps `box` is at most a cell wide and high, so its centre
+      // lies within half a cell of `box`; the cells within three quarters of one (and the slack)
+      // hold every such box, whatever the rounding of widths and centres.
+      const double w = cell_w(l), h = cell_h(l), mx = 0.75 * w + slack_x_, my = 0.75 * h + slack_y_;
+      const long x0 = cell(box.xmin() - mx, domain_.xmin(), w, l), x1 = cell(box.xmax() + mx, domain_.xmin(), w, l);
+      const long y0 = cell(box.ymin() - my, domain_.ymin(), h, l), y1 = cell(box.ymax() + my, domain_.ymin(), h, l);
       for (long y = y0; y <= y1; ++y)
         for (long x = x0; x <= x1; ++x)
           for (std::uint32_t id : cells_[l][index(l, x, y)])
@@ -73,7 +81,7 @@ class LooseGrid {
   static std::size_t index(int l, long x, long y) { return std::size_t(y) * (std::size_t(1) << l) + std::size_t(x); }
 
   CGAL::Bbox_2 domain_;
-  double width_ = 1, height_ = 1;
+  double width_ = 1, height_ = 1, slack_x_ = 0, slack_y_ = 0;
   int levels_ = 1;
   std::vector<std::vector<std::vector<std::uint32_t>>> cells_;  // per level, per cell
   std::vector<CGAL::Bbox_2> boxes_;

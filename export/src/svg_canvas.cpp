@@ -75,26 +75,17 @@ class SvgCanvas final : public Canvas {
           mm(item.y);
           break;
         case SheetPath::Op::arc:
+        case SheetPath::Op::ellipse: {
           // rx ry rotation large-arc sweep x y; sweep 1 is the direction of growing angle (SVG's
-          // "positive angle", clockwise as seen with y down). Arcs are at most half a turn.
+          // "positive angle", clockwise as seen with y down). Arcs are at most half a turn; a
+          // circle's arc has ry = rx and no rotation.
+          const bool circle = item.op == SheetPath::Op::arc;
           out_ += 'A';
           mm(item.r);
           out_ += ' ';
-          mm(item.r);
-          out_ += " 0 0 ";
-          out_ += item.increasing ? '1' : '0';
+          mm(circle ? item.r : item.ry);
           out_ += ' ';
-          mm(item.x);
-          out_ += ' ';
-          mm(item.y);
-          break;
-        case SheetPath::Op::ellipse:
-          out_ += 'A';
-          mm(item.r);
-          out_ += ' ';
-          mm(item.ry);
-          out_ += ' ';
-          mm(item.rotation * 180 / 3.14159265358979323846);
+          mm(circle ? 0.0 : item.rotation * 180 / 3.14159265358979323846);
           out_ += " 0 ";
           out_ += item.increasing ? '1' : '0';
           out_ += ' ';
@@ -102,6 +93,7 @@ class SvgCanvas final : public Canvas {
           out_ += ' ';
           mm(item.y);
           break;
+        }
         case SheetPath::Op::close: out_ += 'Z'; break;
       }
     }

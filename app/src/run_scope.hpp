@@ -13,6 +13,8 @@
 #include "progress_display.hpp"
 #include "scene_options.hpp"
 
+#include <tbb/global_control.h>
+
 #include <memory>
 #include <string>
 #include <string_view>
@@ -23,7 +25,7 @@ namespace hlr::app {
 class RunScope {
  public:
   // threads: oneTBB's limit (0: every core); the output does not depend on it.
-  RunScope(const RunLimits& limits, int threads = 0);
+  explicit RunScope(const RunLimits& limits, int threads = 0);
   RunScope(const RunScope&) = delete;
   RunScope& operator=(const RunScope&) = delete;
 

@@ -10,10 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include <tbb/global_control.h>
-
 #include <chrono>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>

@@ -96,7 +96,7 @@ bool straddles(const Mesh& mesh_g, const std::vector<std::uint32_t>& g, const st
 // both) exactly when the rays agree, that is when q, the point where f1 f2 meets g's plane, lies
 // strictly on g2's side of the line v g1 within g's plane. With u = g1 - v, n = u x (g2 - v),
 // d(x) = (x - v).n and h(x) = (u x (x - v)).n, that is sign((d1 h(f2) - d2 h(f1)) / (d1 - d2)) > 0.
-// For any number type: kernel's filtered_sign evaluates it.
+// Written for any number type: filtered_sign (kernel/) decides it on intervals first.
 template <class NT>
 auto shared_corner_sign(const Vec3& v, const Vec3& f1, const Vec3& f2, const Vec3& g1,
                                               const Vec3& g2) {

@@ -309,6 +309,7 @@ class AreaSort {
         const std::uint32_t id = slots[slot].back();
         slots[slot].pop_back();
         live[id] = 0;
+        grid.remove(id);
         Item front = std::move(pieces[id]);
         // Pieces of the front's own source never overlap it.
         cut.clear();
@@ -327,6 +328,7 @@ class AreaSort {
                 relation(item.polygon, item.source, front.source) != Relation::behind)
               return false;
             live[other] = 0;
+            grid.remove(other);
             auto& kept = slots[slot_of[other]];
             kept.erase(std::find(kept.begin(), kept.end(), other));
             return true;
@@ -342,6 +344,7 @@ class AreaSort {
           for (std::size_t i = 0; i < cut.size(); ++i) {
             const std::uint32_t other = cut[i], source = pieces[other].source, home = slot_of[other];
             live[other] = 0;
+            grid.remove(other);
             auto& kept = slots[home];
             kept.erase(std::find(kept.begin(), kept.end(), other));
             for (auto& piece : results[i].outside) {

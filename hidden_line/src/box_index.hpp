@@ -42,15 +42,21 @@ class LooseGrid {
     slack_y_ = 1e-15 * (std::abs(domain_.ymin()) + std::abs(domain_.ymax()));
   }
 
-  // Files the box at the finest level whose cells are as wide and as high as it, in the cell of
-  // its centre.
+  // Files the box (cell_of).
   void insert(std::uint32_t id, const CGAL::Bbox_2& box) {
     if (id >= boxes_.size()) boxes_.resize(id + 1);
     boxes_[id] = box;
-    int l = levels_ - 1;
-    while (l > 0 && (box.xmax() - box.xmin() > cell_w(l) || box.ymax() - box.ymin() > cell_h(l))) --l;
-    const double cx = box.xmin() + (box.xmax() - box.xmin()) / 2, cy = box.ymin() + (box.ymax() - box.ymin()) / 2;
-    cells_[l][index(l, cell(cx, domain_.xmin(), cell_w(l), l), cell(cy, domain_.ymin(), cell_h(l), l))].push_back(id);
+    cell_of(box).push_back(id);
+  }
+
+  // Takes an inserted id out, so that queries no longer look at it (the area sort's pieces that a
+  // clip replaced). The order of ids in a cell changes; queries promise no order.
+  void remove(std::uint32_t id) {
+    auto& ids = cell_of(boxes_[id]);
+    const auto it = std::find(ids.begin(), ids.end(), id);
+    if (it == ids.end()) return;
+    *it = ids.back();
+    ids.pop_back();
   }
 
   // Calls visit(id) for every inserted id whose box overlaps `box` (each id once).
@@ -77,6 +83,14 @@ class LooseGrid {
     const double q = std::floor((v - lo) / size);
     const long n = 1L << l;
     return q >= double(n - 1) ? n - 1 : q >= 0 ? long(q) : 0;  // clamped: monotone, so nothing is missed
+  }
+  // The cell a box is filed in: at the finest level whose cells are as wide and as high as it,
+  // the cell of its centre.
+  std::vector<std::uint32_t>& cell_of(const CGAL::Bbox_2& box) {
+    int l = levels_ - 1;
+    while (l > 0 && (box.xmax() - box.xmin() > cell_w(l) || box.ymax() - box.ymin() > cell_h(l))) --l;
+    const double cx = box.xmin() + (box.xmax() - box.xmin()) / 2, cy = box.ymin() + (box.ymax() - box.ymin()) / 2;
+    return cells_[l][index(l, cell(cx, domain_.xmin(), cell_w(l), l), cell(cy, domain_.ymin(), cell_h(l), l))];
   }
   static std::size_t index(int l, long x, long y) { return std::size_t(y) * (std::size_t(1) << l) + std::size_t(x); }
 

@@ -181,7 +181,7 @@ int run(const MeshOptions& options) {
   const Format format = format_of(options.output);
   AtomicFile file(options.output);
   RunScope run(options.limits);
-  const Scene scene = run.read(options.inputs, options.cad, "model");
+  const Scene scene = run.read(options.inputs, options.cad, "model", "models");
   run.stage("writing " + options.output);
   // Part names as the drawings name them: the source's, else the file's stem.
   std::vector<std::string> parts;

@@ -10,8 +10,9 @@ RunScope::RunScope(const RunLimits& limits, int threads)
       display_(ProgressDisplay::mode_for(limits.progress)),
       limits_(limits) {}
 
-Scene RunScope::read(const std::vector<std::string>& paths, const cad::CadOptions& cad, std::string_view noun) {
-  display_.stage("reading " + std::to_string(paths.size()) + " " + std::string(noun) + (paths.size() == 1 ? "" : "s"));
+Scene RunScope::read(const std::vector<std::string>& paths, const cad::CadOptions& cad, std::string_view one,
+                     std::string_view many) {
+  display_.stage("reading " + std::to_string(paths.size()) + " " + std::string(paths.size() == 1 ? one : many));
   return read_scene(paths, limits_, cad);
 }
 

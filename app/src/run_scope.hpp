@@ -29,9 +29,10 @@ class RunScope {
   RunScope(const RunScope&) = delete;
   RunScope& operator=(const RunScope&) = delete;
 
-  // Reads every mesh and CAD model as the stage "reading N <noun>s" (read_scene: throws
-  // ImportError, or UserError beyond --max-faces).
-  Scene read(const std::vector<std::string>& paths, const cad::CadOptions& cad, std::string_view noun = "mesh");
+  // Reads every mesh and CAD model as the stage "reading 1 <one>" or "reading N <many>"
+  // (read_scene: throws ImportError, or UserError beyond --max-faces).
+  Scene read(const std::vector<std::string>& paths, const cad::CadOptions& cad, std::string_view one = "mesh",
+             std::string_view many = "meshes");
 
   exporter::Progress progress() { return display_.progress(); }
   void stage(std::string_view what) { display_.stage(what); }

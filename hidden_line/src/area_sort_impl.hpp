@@ -294,7 +294,6 @@ class AreaSort {
     std::vector<Item> pieces = std::move(list);
     std::vector<std::uint32_t> slot_of(pieces.size());
     std::vector<std::vector<std::uint32_t>> slots(pieces.size());
-    std::vector<char> live(pieces.size(), 1);
     for (std::uint32_t i = 0; i < pieces.size(); ++i) {
       slot_of[i] = i;
       slots[i] = {i};
@@ -308,13 +307,12 @@ class AreaSort {
         options_.stop.check_every(fronts_, 64);
         const std::uint32_t id = slots[slot].back();
         slots[slot].pop_back();
-        live[id] = 0;
         grid.remove(id);
         Item front = std::move(pieces[id]);
         // Pieces of the front's own source never overlap it.
         cut.clear();
         grid.query(front.box, [&](std::uint32_t other) {
-          if (live[other] && pieces[other].source != front.source &&
+          if (pieces[other].source != front.source &&
               !separated(front.polygon.outer, pieces[other].polygon.outer))
             cut.push_back(other);
         });
@@ -327,7 +325,6 @@ class AreaSort {
             if (!covered(front.polygon.outer, item.polygon.outer) ||
                 relation(item.polygon, item.source, front.source) != Relation::behind)
               return false;
-            live[other] = 0;
             grid.remove(other);
             auto& kept = slots[slot_of[other]];
             kept.erase(std::find(kept.begin(), kept.end(), other));
@@ -343,7 +340,6 @@ class AreaSort {
           auto results = clip::clip_list<K>(subjects, region);
           for (std::size_t i = 0; i < cut.size(); ++i) {
             const std::uint32_t other = cut[i], source = pieces[other].source, home = slot_of[other];
-            live[other] = 0;
             grid.remove(other);
             auto& kept = slots[home];
             kept.erase(std::find(kept.begin(), kept.end(), other));
@@ -352,7 +348,6 @@ class AreaSort {
               const CGAL::Bbox_2 box = box_of(piece);
               pieces.push_back({std::move(piece), source, box});
               slot_of.push_back(home);
-              live.push_back(1);
               kept.push_back(pid);
               grid.insert(pid, box);
             }

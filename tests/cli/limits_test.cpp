@@ -173,6 +173,9 @@ TEST_F(CliLimits, ProgressLinesOnlyWhenAskedOffATerminal) {
   for (const char* stage : {"hlr: reading 1 mesh\n", "hlr: sorting ", "hlr: classifying feature lines\n",
                             "hlr: writing 1 output\n"})
     EXPECT_NE(lines.err.find(stage), std::string::npos) << stage << " in:\n" << lines.err;
+  const Outcome two = hlr({"draw", cube.string(), cube.string(), "-o", out("c.svg"), "--progress"});
+  EXPECT_EQ(two.exit_code, 0);
+  EXPECT_NE(two.err.find("hlr: reading 2 meshes\n"), std::string::npos) << two.err;
 }
 
 TEST_F(CliLimits, ALiveProgressLineOnATerminal) {

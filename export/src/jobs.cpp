@@ -19,6 +19,7 @@ hidden_line::LineOptions line_options(const DrawOptions& options) {
   lines.features.smooth_edges = options.smooth_edges;
   lines.intersections = options.intersections;
   lines.stop = options.progress.stop;
+  lines.free_at_exit = options.free_at_exit;
   return lines;
 }
 

@@ -124,13 +124,23 @@ bool crosses_at_shared_corner(const Vec3& v, const Vec3& f1, const Vec3& f2, con
 }  // namespace
 
 namespace {
-// The angle between two planes with these normals, in degrees in [0, 90], in double (output only).
-double angle_between(const EK::Vector_3& n, const EK::Vector_3& m) {
-  const double a[3] = {G::rough_double(n.x()), G::rough_double(n.y()), G::rough_double(n.z())};
-  const double b[3] = {G::rough_double(m.x()), G::rough_double(m.y()), G::rough_double(m.z())};
+// The angle between two planes with these normals, in degrees in [0, 90], in double (output only:
+// the sheet leaves off lines where surfaces meet at a small angle).
+double angle_between(const std::array<double, 3>& a, const std::array<double, 3>& b) {
   const double cross = std::hypot(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
   const double dot = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
   return std::atan2(cross, dot) * 180 / std::numbers::pi;
+}
+// (q - p) x (r - p) in double, for angle_between: no lazy plane for the many pairs of triangles.
+std::array<double, 3> rough_normal(const Vec3& p, const Vec3& q, const Vec3& r) {
+  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, v[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+// compare_xyz, with copies of one lazy point equal without arithmetic (the crossings neighbouring
+// chords share).
+CGAL::Comparison_result compare_points(const EK::Point_3& a, const EK::Point_3& b) {
+  return a.id() == b.id() ? CGAL::EQUAL : CGAL::compare_xyz(a, b);
 }
 
 // Where the boundary of a triangle meets the plane of a face it straddles: two points, corners in
@@ -164,7 +174,7 @@ class TriangleChords {
       else if (side[k] * side[(k + 1) % 3] < 0) out[n++] = crossing(mesh, u, w, a, b, c, plane_id);
     }
     if (n != 2) throw std::logic_error("a triangle straddling a plane did not meet it in two points");
-    if (CGAL::compare_xyz(out[1], out[0]) == CGAL::SMALLER) std::swap(out[0], out[1]);
+    if (compare_points(out[1], out[0]) == CGAL::SMALLER) std::swap(out[0], out[1]);
     return out;
   }
 
@@ -284,6 +294,11 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     std::uint32_t face_a, face_b;
     double meeting_degrees;
   };
+  auto rough_normal_of = [&](const FaceRef& r) {
+    const auto& pv = topo[r.mesh].plane_vertices[r.face];
+    const Mesh& m = meshes[r.mesh];
+    return rough_normal(m.vertices[pv[0]], m.vertices[pv[1]], m.vertices[pv[2]]);
+  };
   auto plane_of = [&](const FaceRef& r) {
     const auto& pv = topo[r.mesh].plane_vertices[r.face];
     const Mesh& m = meshes[r.mesh];
@@ -307,9 +322,8 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
         // One key per pair of groups, whichever face came first.
         if (std::pair(g.mesh, topo[g.mesh].coplanar_group[g.face]) < std::pair(f.mesh, topo[f.mesh].coplanar_group[f.face]))
           std::swap(f, g);
-        const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);
         const GroupPair key{f.mesh, topo[f.mesh].coplanar_group[f.face], g.mesh, topo[g.mesh].coplanar_group[g.face]};
-        const double meeting_degrees = angle_between(pf.orthogonal_vector(), pg.orthogonal_vector());
+        const double meeting_degrees = angle_between(rough_normal_of(f), rough_normal_of(g));
         if (meshes[f.mesh].faces[f.face].size() == 3 && meshes[g.mesh].faces[g.face].size() == 3) {
           // Two triangles: the open chords each cuts from the line of the two planes, overlapped.
           auto chord = [&](const FaceRef& t, const FaceRef& other) {
@@ -319,11 +333,12 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
             return chords.chord(t.mesh, t.face, om.vertices[pv[0]], om.vertices[pv[1]], om.vertices[pv[2]], plane_id);
           };
           const auto in_f = chord(f, g), in_g = chord(g, f);
-          const EK::Point_3& lo = CGAL::compare_xyz(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
-          const EK::Point_3& hi = CGAL::compare_xyz(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
-          if (CGAL::compare_xyz(lo, hi) == CGAL::SMALLER) out.push_back({key, {lo, hi, f.face, g.face, meeting_degrees}});
+          const EK::Point_3& lo = compare_points(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
+          const EK::Point_3& hi = compare_points(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
+          if (compare_points(lo, hi) == CGAL::SMALLER) out.push_back({key, {lo, hi, f.face, g.face, meeting_degrees}});
           continue;
         }
+        const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);
         const auto meet = CGAL::intersection(pf, pg);
         if (!meet) continue;
         const EK::Line_3* line = boost::get<EK::Line_3>(&*meet);  // CGAL 5: boost::variant
@@ -352,12 +367,12 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   std::vector<IntersectionSegment> out;
   for (auto& [key, list] : pieces) {
     std::sort(list.begin(), list.end(),
-              [](const Piece& x, const Piece& y) { return CGAL::compare_xyz(x.a, y.a) == CGAL::SMALLER; });
+              [](const Piece& x, const Piece& y) { return compare_points(x.a, y.a) == CGAL::SMALLER; });
     for (std::size_t k = 0; k < list.size();) {
       IntersectionSegment s{list[k].a,          list[k].b,          std::get<0>(key), std::get<2>(key),
                             {list[k].face_a}, {list[k].face_b}, list[k].meeting_degrees};
-      for (++k; k < list.size() && CGAL::compare_xyz(list[k].a, s.b) != CGAL::LARGER; ++k) {
-        if (CGAL::compare_xyz(list[k].b, s.b) == CGAL::LARGER) s.b = list[k].b;
+      for (++k; k < list.size() && compare_points(list[k].a, s.b) != CGAL::LARGER; ++k) {
+        if (compare_points(list[k].b, s.b) == CGAL::LARGER) s.b = list[k].b;
         s.faces_a.push_back(list[k].face_a);
         s.faces_b.push_back(list[k].face_b);
       }

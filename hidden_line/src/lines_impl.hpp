@@ -15,6 +15,7 @@
 
 #include <hlr/hidden_line/lines.hpp>
 #include <hlr/hidden_line/parallel.hpp>
+#include <hlr/kernel/line_box.hpp>
 #include <hlr/kernel/line_parameters.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
 #include <hlr/kernel/view_predicates.hpp>
@@ -179,7 +180,8 @@ class Classifier {
           if (at.empty() || at.back() != std::int32_t(s)) at.push_back(std::int32_t(s));  // sources come in order
         }
     }
-    for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid_.insert(i, box_of(map.visible[i].polygon));
+    boxes_.reserve(map.visible.size());
+    for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid_.insert(i, boxes_.emplace_back(box_of(map.visible[i].polygon)));
     for (std::uint32_t i = 0; i < sources.edge_on_edges.size(); ++i) {
       const auto [m, v0, v1] = sources.edge_on_edges[i];
       edge_on_grid_.insert(i, G::bbox(image(m, v0)) + G::bbox(image(m, v1)));
@@ -329,6 +331,8 @@ class Classifier {
       const Depth<K>& depth = depth_of_source(frag.source);
       // Never strictly nearer along the line (the depth difference is linear in t).
       if (depth.sign0 <= 0 && depth.sign1 <= 0) return;
+      // A line across the box's corner: the boxes overlap, the fragment lies off the line.
+      if (line_misses_box<K>(line.a, line.b, boxes_[i])) return;
       for (const auto& [lo, hi] : inside_intervals(line, frag.polygon, params, true, true))
         occluders_.push_back({lo, hi, &depth});
     });
@@ -392,6 +396,7 @@ class Classifier {
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
   std::vector<std::vector<std::vector<std::int32_t>>> sources_at_vertex_;  // per mesh, per vertex, sorted
+  std::vector<CGAL::Bbox_2> boxes_;  // of map_.visible's polygons
   LooseGrid grid_, edge_on_grid_;
 };
 
@@ -417,50 +422,63 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
     owns.push_back(std::move(own));
   };
 
-  for (std::uint32_t m = 0; m < meshes.size(); ++m) {
-    const NearCut<K>& cut = sources.near_cuts[m];
-    for (const FeatureEdge& edge : feature_edges(meshes[m], frame.view(), options.features)) {
-      // In perspective, the part in front of the near plane; an edge wholly behind it is not drawn.
-      const auto ends = cut.edge_ends(edge.v0, edge.v1);
-      if (!ends) continue;
-      FeatureLine<K> line;
-      line.a = classifier.view_point(m, (*ends)[0]);
-      line.b = classifier.view_point(m, (*ends)[1]);
-      line.kind = edge.kind;
-      line.mesh = m;
-      line.v0 = edge.v0;
-      line.v1 = edge.v1;
-      line.has_model_ends = (*ends)[0] == edge.v0 && (*ends)[1] == edge.v1;
-      line.model_a = meshes[m].vertices[edge.v0];
-      line.model_b = meshes[m].vertices[edge.v1];
-      add(std::move(line), {{m, &edge.faces}});
-    }
-  }
-  if (options.intersections) {
-    for (const IntersectionSegment& s : intersections) {
-      const auto ends = frame.to_view_clipped(s.a, s.b);
-      if (!ends) continue;
-      FeatureLine<K> line;
-      line.a = ends->first;
-      line.b = ends->second;
-      line.kind = FeatureKind::intersection;
-      line.mesh = s.mesh_a;
-      line.meeting_degrees = s.meeting_degrees;
-      add(std::move(line), {{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
-    }
-  }
-
   tbb::enumerable_thread_specific<typename detail::Classifier<K>::Scratch> scratch;
-  parallel_chunks(out.lines.size(), 16, [&](const auto& range) {
-    options.stop.check();
-    auto& mine = scratch.local();
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      FeatureLine<K>& line = out.lines[i];
-      const auto query = line.kind == FeatureKind::intersection ? classifier.constructed(line.a, line.b)
-                                                                : classifier.mesh_edge(line.mesh, line.v0, line.v1);
-      line.pieces = classifier.classify(query, owns[i], mine);
+  std::size_t polls = 0;
+  try {
+    for (std::uint32_t m = 0; m < meshes.size(); ++m) {
+      const NearCut<K>& cut = sources.near_cuts[m];
+      for (const FeatureEdge& edge : feature_edges(meshes[m], frame.view(), options.features)) {
+        options.stop.check_every(polls, 1024);
+        // In perspective, the part in front of the near plane; an edge wholly behind it is not drawn.
+        const auto ends = cut.edge_ends(edge.v0, edge.v1);
+        if (!ends) continue;
+        FeatureLine<K> line;
+        line.a = classifier.view_point(m, (*ends)[0]);
+        line.b = classifier.view_point(m, (*ends)[1]);
+        line.kind = edge.kind;
+        line.mesh = m;
+        line.v0 = edge.v0;
+        line.v1 = edge.v1;
+        line.has_model_ends = (*ends)[0] == edge.v0 && (*ends)[1] == edge.v1;
+        line.model_a = meshes[m].vertices[edge.v0];
+        line.model_b = meshes[m].vertices[edge.v1];
+        add(std::move(line), {{m, &edge.faces}});
+      }
     }
-  });
+    if (options.intersections) {
+      for (const IntersectionSegment& s : intersections) {
+        options.stop.check_every(polls, 1024);
+        const auto ends = frame.to_view_clipped(s.a, s.b);
+        if (!ends) continue;
+        FeatureLine<K> line;
+        line.a = ends->first;
+        line.b = ends->second;
+        line.kind = FeatureKind::intersection;
+        line.mesh = s.mesh_a;
+        line.meeting_degrees = s.meeting_degrees;
+        add(std::move(line), {{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
+      }
+    }
+
+    parallel_chunks(out.lines.size(), 16, [&](const auto& range) {
+      options.stop.check();
+      auto& mine = scratch.local();
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        FeatureLine<K>& line = out.lines[i];
+        const auto query = line.kind == FeatureKind::intersection ? classifier.constructed(line.a, line.b)
+                                                                  : classifier.mesh_edge(line.mesh, line.v0, line.v1);
+        line.pieces = classifier.classify(query, owns[i], mine);
+      }
+    });
+  } catch (const Cancelled&) {
+    // Freeing millions of lazy exact numbers one by one would delay the stop by about a second at
+    // 1M faces: a run that ends at once leaves them to the operating system.
+    if (options.free_at_exit) {
+      (void)new LineSet<K>(std::move(out));
+      (void)new std::vector<std::vector<std::int32_t>>(std::move(owns));
+    }
+    throw;
+  }
   for (const auto& line : out.lines) {
     ++out.stats.by_kind[static_cast<int>(line.kind)];
     if (line.pieces.empty()) ++out.stats.point_in_view;

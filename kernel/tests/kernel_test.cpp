@@ -1,6 +1,7 @@
 // The traits interface answers the same on every kernel where the answer is representable, and
 // the exact kernel keeps what double rounds away.
 #include <hlr/kernel/kernel.hpp>
+#include <hlr/kernel/line_box.hpp>
 
 #include <gtest/gtest.h>
 
@@ -119,6 +120,43 @@ TEST(ExactKernel, FilteredShortcutsAgreeWithExactEvaluation) {
     }
   }
   EXPECT_GT(zeros, 100u) << "the draws must hit ties";
+}
+
+// line_misses_box is a filter: "true" must be the exact answer (every corner of the box strictly
+// on one side of the line), on constructed points and on a coarse grid where lines pass through
+// corners; and it must say so for most boxes that the line clearly misses.
+TEST(ExactKernel, LineMissesBoxOnlyWhenEveryCornerIsOnOneSide) {
+  using G = Geometry<ExactKernel>;
+  using FT = ExactKernel::FT;
+  std::mt19937_64 random(20261203);
+  std::uniform_int_distribution<int> grid(-4, 4);
+  std::size_t misses = 0, clear = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Line ends on a grid of quarters, or constructed (a third of a grid point): not one double.
+    auto end = [&] {
+      const double x = grid(random) / 4.0, y = grid(random) / 4.0;
+      return i % 2 ? G::point(x, y) : G::point(FT(x) / FT(3), FT(y) / FT(3));
+    };
+    const auto a = end(), b = end();
+    if (G::equal(a, b)) continue;
+    double x0 = grid(random) / 4.0, x1 = grid(random) / 4.0, y0 = grid(random) / 4.0, y1 = grid(random) / 4.0;
+    if (x1 < x0) std::swap(x0, x1);
+    if (y1 < y0) std::swap(y0, y1);
+    int positive = 0, negative = 0;
+    for (const double x : {x0, x1})
+      for (const double y : {y0, y1}) {
+        const int side = G::orientation(a, b, G::point(x, y));
+        positive += side > 0;
+        negative += side < 0;
+      }
+    const bool exact_miss = positive == 4 || negative == 4;
+    const bool filtered = line_misses_box<ExactKernel>(a, b, CGAL::Bbox_2(x0, y0, x1, y1));
+    ASSERT_TRUE(!filtered || exact_miss) << i;
+    misses += filtered;
+    clear += exact_miss;
+  }
+  EXPECT_GT(misses, clear * 9 / 10) << "the filter should decide most clear misses";
+  EXPECT_FALSE(line_misses_box<DoubleKernel>(DoublePoint{0, 0}, DoublePoint{1, 0}, CGAL::Bbox_2(0, 1, 1, 2)));
 }
 
 }  // namespace

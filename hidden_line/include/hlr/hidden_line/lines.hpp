@@ -81,7 +81,8 @@ struct LineSet {
 struct LineOptions {
   FeatureOptions features;
   bool intersections = true;
-  StopToken stop;  // polled between chunks of lines
+  StopToken stop;  // polled every so many lines
+  bool free_at_exit = false;  // a stopped classification leaves its lines to the process's exit
 };
 
 // `sources` and `map` must come from build_sources and area_sort of the same meshes and frame,

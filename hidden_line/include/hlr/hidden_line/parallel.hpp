@@ -1,10 +1,13 @@
 // hlr hidden_line, parallel loops: oneTBB over chunks of an index range, run inline when the range
 // is one chunk, so that a small scene does not pay for starting the scheduler. Callers process each
-// index on its own, so results never depend on the number of threads.
+// index on its own, so results never depend on the number of threads. Each call of the body gets
+// at most `grain` indices (oneTBB's simple partitioner; its default one may hand a thread a large
+// share of the whole range at once), so that a stop polled once per call takes effect soon.
 #pragma once
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 
 #include <cstddef>
 
@@ -14,7 +17,7 @@ template <class Body>
 void parallel_chunks(std::size_t size, std::size_t grain, const Body& body) {
   const tbb::blocked_range<std::size_t> all(0, size, grain);
   if (size <= grain) body(all);
-  else tbb::parallel_for(all, body);
+  else tbb::parallel_for(all, body, tbb::simple_partitioner());
 }
 
 }  // namespace hlr::hidden_line

@@ -1110,7 +1110,7 @@ TEST_F(CliDraw, BadMergeDistanceIsAUsageError) {
 TEST_F(CliDraw, UnknownSubcommandIsNamed) {
   Outcome run = hlr({"drwa", (kScenes / "cube.off").string(), "-o", out("c.svg").string()});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, sheet, check, surfaces, shadows, mesh, clip or batch; see 'hlr --help')\n");
+  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, sheet, frames, check, surfaces, shadows, mesh, clip or batch; see 'hlr --help')\n");
   EXPECT_TRUE(entries(dir_ / "out").empty());
   run = hlr({});
   EXPECT_EQ(run.exit_code, 2);

@@ -92,7 +92,6 @@ TEST_F(CliFrames, EveryFrameIsTheDrawingOfItsEye) {
                            (dir_ / "out" / "f%02d.json").string(), "-o", (dir_ / "out" / "f%02d.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(outputs(), (std::vector<std::string>{"f00.json", "f00.svg", "f01.json", "f01.svg", "f02.json", "f02.svg"}));
-  double scale = 0;
   for (std::size_t i = 0; i < eyes.size(); ++i) {
     std::string eye = eyes[i];
     for (char& c : eye) c = c == ' ' ? ',' : c;
@@ -109,7 +108,6 @@ TEST_F(CliFrames, EveryFrameIsTheDrawingOfItsEye) {
     // One scale on every frame's sheet (the title block names the sheet's scale).
     const std::string svg = slurp(out("f0" + std::to_string(i) + ".svg"));
     EXPECT_NE(svg.find("NTS (perspective)"), std::string::npos);
-    (void)scale;
   }
   EXPECT_NE(run.out.find("3 frames in 3 groups"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("sheets at one scale"), std::string::npos) << run.out;

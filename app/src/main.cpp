@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
   std::vector<Subcommand> commands;
   commands.push_back(add_draw_command(app));
   commands.push_back(add_sheet_command(app));
+  commands.push_back(add_frames_command(app));
   commands.push_back(add_check_command(app));
   commands.push_back(add_surfaces_command(app));
   commands.push_back(add_shadows_command(app));
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
       "Examples:\n"
       "  hlr draw fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg -o out/bracket.dxf\n"
       "  hlr sheet fixtures/parts/flange.off --views front,top,right,iso -o out/flange.pdf\n"
+      "  hlr frames fixtures/scenes/l_bracket.off --orbit 36 -o out/orbit/frame_%03d.svg\n"
       "  hlr surfaces fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg\n"
       "  hlr shadows fixtures/shadows/box_on_ground.off --sun 1,2,-4 -o out/box_shadows.json\n"
       "  hlr draw part.step --view front --deflection 0.05 -o out/part.dxf\n"

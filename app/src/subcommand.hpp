@@ -30,6 +30,7 @@ Subcommand add_surfaces_command(CLI::App& parent);
 Subcommand add_shadows_command(CLI::App& parent);
 Subcommand add_draw_command(CLI::App& parent);
 Subcommand add_sheet_command(CLI::App& parent);
+Subcommand add_frames_command(CLI::App& parent);
 Subcommand add_check_command(CLI::App& parent);
 Subcommand add_batch_command(CLI::App& parent);
 Subcommand add_mesh_command(CLI::App& parent);

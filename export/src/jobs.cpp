@@ -78,6 +78,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
                   kernel_name(kernel_kind_of<K>()) + ")");
   hidden_line::SourceOptions sources;
   sources.stop = progress.stop;
+  if constexpr (std::is_same_v<K, ExactKernel>) sources.culled = options.culled_faces;
   solution->sources = hidden_line::build_sources<K>(scene.meshes, frame, sources);
   times.sources = seconds_since(mark);
   check();

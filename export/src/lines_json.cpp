@@ -138,6 +138,11 @@ json stats_json(const LineDrawing& drawing, double write) {
     stats["circles"] = drawing.curves->circles;
     stats["arcs"] = drawing.curves->arcs;
   }
+  if (drawing.cull)
+    stats["cull"] = {{"group", drawing.cull->group},
+                     {"patches", drawing.cull->patches},
+                     {"culled", drawing.cull->culled},
+                     {"fuzzy_seconds", drawing.cull->fuzzy_seconds}};
   return stats;
 }
 

@@ -87,6 +87,7 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
 
 // The drawing's centre on the area's centre; view y up, sheet y down.
 detail::Placement placement(const SheetLines& lines, const detail::SheetFrame& frame) {
+  if (lines.centre) return {frame.area.cx(), frame.area.cy(), lines.scale, (*lines.centre)[0], (*lines.centre)[1]};
   const Bounds b = sheet_bounds(lines).value_or(Bounds{});
   return {frame.area.cx(), frame.area.cy(), lines.scale, (b.x0 + b.x1) / 2, (b.y0 + b.y1) / 2};
 }

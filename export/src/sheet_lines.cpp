@@ -120,6 +120,12 @@ double drawing_scale(const LineDrawing& drawing, const DrawingStyle& style) {
          fitting_ratio(bounds->width() * style.unit_mm, bounds->height() * style.unit_mm, area.width(), area.height());
 }
 
+double fitting_scale(const Bounds& bounds, const DrawingStyle& style) {
+  const detail::Box area = detail::frame_of(style.sheet, detail::draw_title_height).area;
+  return style.unit_mm *
+         fitting_ratio(bounds.width() * style.unit_mm, bounds.height() * style.unit_mm, area.width(), area.height());
+}
+
 MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style) {
   return sheet_segments_at(drawing, style, drawing_scale(drawing, style));
 }

@@ -274,9 +274,14 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     std::vector<std::vector<std::uint32_t>> members(nf);
     for (std::uint32_t f = 0; f < nf; ++f)
       if (keep[f]) members[options.consolidate ? topo.coplanar_group[f] : f].push_back(f);
+    const std::vector<bool>* culled = options.culled ? &(*options.culled)[mi] : nullptr;
     for (std::uint32_t g = 0; g < nf; ++g) {
       const auto& faces = members[g];
       if (faces.empty()) continue;
+      if (culled && std::all_of(faces.begin(), faces.end(), [&](std::uint32_t f) { return (*culled)[f]; })) {
+        ++out.stats.sources_culled;
+        continue;
+      }
       if (faces.size() > 1) {
         std::vector<clip::Contour<K>> contours;
         for (std::uint32_t f : faces) contours.push_back(face_contour(f));

@@ -1110,11 +1110,11 @@ TEST_F(CliDraw, BadMergeDistanceIsAUsageError) {
 TEST_F(CliDraw, UnknownSubcommandIsNamed) {
   Outcome run = hlr({"drwa", (kScenes / "cube.off").string(), "-o", out("c.svg").string()});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, sheet, check, surfaces, shadows, mesh, clip or batch; see 'hlr --help')\n");
+  EXPECT_EQ(run.err, "hlr: unknown subcommand 'drwa' (expected draw, sheet, frames, check, surfaces, shadows, mesh, clip or batch; see 'hlr --help')\n");
   EXPECT_TRUE(entries(dir_ / "out").empty());
   run = hlr({});
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(run.err, "hlr: a subcommand is required (draw, sheet, check, surfaces, shadows, mesh, clip or batch; see 'hlr --help')\n");
+  EXPECT_EQ(run.err, "hlr: a subcommand is required (draw, sheet, frames, check, surfaces, shadows, mesh, clip or batch; see 'hlr --help')\n");
   // Options before the subcommand still work; --help and --version too.
   EXPECT_EQ(hlr({"--version"}).exit_code, 0);
   EXPECT_EQ(hlr({"--help"}).exit_code, 0);

@@ -116,6 +116,13 @@ struct LineDrawing {
     std::size_t circles = 0, arcs = 0;
   };
   std::optional<CurveCounts> curves;
+  // A frame of `hlr frames`: its group of eyes and what the fuzzy culling of that group left out of
+  // the area sort (JSON stats "cull"); absent: not written.
+  struct CullCounts {
+    std::size_t group = 0, patches = 0, culled = 0;
+    double fuzzy_seconds = 0;
+  };
+  std::optional<CullCounts> cull;
   // Total image-plane length of `segments` (what a drawing shows), visible and hidden, model units.
   double visible_length() const { return length(true); }
   double hidden_length() const { return length(false); }
@@ -232,6 +239,9 @@ struct SheetLines {
   DrawingCurves curves;                  // the chains with their circles and arcs (what is drawn)
   std::vector<CentreLine> centre_lines;  // centre marks, model units
   std::vector<DrawingArea> shadows;      // LineDrawing::shadows
+  // The view point that hlr draw's sheet puts on its drawing area's centre (model units); none:
+  // the centre of the drawn lines. The frames of one sequence share one (frames.hpp).
+  std::optional<std::array<double, 2>> centre;
 };
 // Without style.scale, the scale is drawing_scale's, or the next smaller ISO scale if the
 // recovered circles (which reach out beyond their polygons) do not fit at it.
@@ -246,6 +256,9 @@ struct Bounds {
   double height() const { return y1 - y0; }
 };
 std::optional<Bounds> sheet_bounds(const SheetLines& sheet);
+// The largest ISO 5455 scale (times style.unit_mm) at which a box of `bounds` (model units) fits
+// the drawing area of hlr draw's sheet in `style`.
+double fitting_scale(const Bounds& bounds, const DrawingStyle& style);
 
 // Why a one-view sheet does not fit its sheet's drawing area at its scale ("the drawing needs
 // 400 x 120 mm at 2:1; the drawing area of A4 is 257 x 160 mm"), or nothing when it fits.

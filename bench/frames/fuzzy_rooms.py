@@ -1,0 +1,66 @@
+#!/usr/bin/env python3
+"""Lim's Table 1 for hlr: the room models (rooms.py) drawn from five eyes in a box in the first
+room by `hlr frames`, with --cull none and --cull fuzzy. Per model: faces, faces culled, the
+fuzzy pass's time, the five frames' solving time (the sum of their stats.seconds, and the
+fuzzy pass) each way, and
+whether the outputs are the same (JSON without stats, SVG bytes).
+
+  fuzzy_rooms.py HLR OUT_DIR [--rooms 1,2,3,4] [--cell 0.5] [--threads 2]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def run_frames(hlr, mesh, eyes, cull, out, threads):
+    os.makedirs(out, exist_ok=True)
+    cmd = [hlr, "frames", mesh, "--eyes", eyes, "--target", "5,8,1.5", "--cull", cull, "--threads", str(threads),
+           "-o", os.path.join(out, "f%d.json"), "-o", os.path.join(out, "f%d.svg")]
+    start = time.monotonic()
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    wall = time.monotonic() - start
+    frames = [json.load(open(os.path.join(out, f"f{i}.json"))) for i in range(5)]
+    return wall, frames
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("hlr")
+    ap.add_argument("out")
+    ap.add_argument("--rooms", default="1,2,3,4")
+    ap.add_argument("--cell", default="0.5")
+    ap.add_argument("--threads", type=int, default=2)
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    print("| rooms | faces | culled (all 5 eyes) | fuzzy pass (s) | 5 frames, --cull none (s) | 5 frames, --cull fuzzy (s) | speed-up | same output |")
+    print("|---|---|---|---|---|---|---|---|")
+    for n in map(int, a.rooms.split(",")):
+        mesh = os.path.join(a.out, f"rooms{n}.off")
+        subprocess.run([sys.executable, os.path.join(HERE, "rooms.py"), str(n), mesh, "--cell", a.cell], check=True,
+                       stdout=subprocess.DEVNULL)
+        eyes = mesh[:-4] + ".eyes.txt"
+        runs = {}
+        for cull in ("none", "fuzzy"):
+            runs[cull] = run_frames(a.hlr, mesh, eyes, cull, os.path.join(a.out, f"rooms{n}_{cull}"), a.threads)
+        same = True
+        for i in range(5):
+            f, g = dict(runs["fuzzy"][1][i]), dict(runs["none"][1][i])
+            f.pop("stats"), g.pop("stats")
+            same = same and f == g
+            svg = [open(os.path.join(a.out, f"rooms{n}_{c}", f"f{i}.svg"), "rb").read() for c in ("fuzzy", "none")]
+            same = same and svg[0] == svg[1]
+        cull = runs["fuzzy"][1][0]["stats"]["cull"]
+        solve = {c: sum(fr["stats"]["seconds"] for fr in runs[c][1]) for c in runs}
+        solve["fuzzy"] += cull["fuzzy_seconds"]  # the pass runs once for the group, before its frames
+        print(f"| {n} | {cull['patches']} | {cull['culled']} ({100 * cull['culled'] / cull['patches']:.0f} %) | "
+              f"{cull['fuzzy_seconds']:.3f} | {solve['none']:.2f} | {solve['fuzzy']:.2f} | "
+              f"{solve['none'] / solve['fuzzy']:.2f} | {'yes' if same else 'NO'} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()

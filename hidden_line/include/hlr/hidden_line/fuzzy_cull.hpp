@@ -1,0 +1,64 @@
+// hlr hidden_line, fuzzy culling: the faces of a scene that no eye of a group of perspective views
+// can see, found once for the group (after Lim, "Toward a fuzzy hidden surface algorithm",
+// ../shared/seeds/000_2ecfc050513bde2d.txt), so that every view of the group leaves them out of its
+// area sort.
+//
+// The eyes are replaced by their bounding box B. Directions from B are sampled on the six faces of
+// a fuzzy projection cube: on the face (k, s) (axis k, sign s) a direction is (u, w) = the other two
+// components divided by s times the k component, and only faces whose vertices all lie strictly
+// beyond B along s·k take part there, so that every ray from B towards them runs along s·k. Each
+// face of the cube is a grid of pixels over |u|, |w| <= reach.
+//   - Occluders are the faces that every view from B keeps in its area sort and that face B
+//     strictly, with one side for all of B (exact orientation tests on the input doubles): not seen
+//     edge-on, never back faces of a closed component, and not cut by the near plane of any of the
+//     group's views (every vertex deeper than its near plane, with a margin). Occluders joined
+//     across edges they run in opposite directions, with the same side towards B, form regions;
+//     any other edge of an occluder is a boundary edge of its region.
+//   - A region cannot fold over as seen from B, so the number of times a ray from B meets it
+//     changes only where the ray crosses a boundary edge. A pixel that no boundary edge's fuzzy
+//     extent reaches (the rectangle of the directions from B's corners to the edge's ends, which
+//     holds every direction from B to the edge, widened and rounded outward to whole pixels, one
+//     more pixel around) and whose centre direction from one eye meets the region (an interval
+//     test that says yes only when certain) is therefore met from every point of B, in every one of
+//     its directions: it is in the region's umbra. The pixel keeps the smallest largest depth
+//     (s times the k coordinate) of the regions whose umbra it is in.
+//   - A face whose fuzzy extent lies within the grid, on pixels that each keep a depth strictly
+//     below its own smallest depth, is hidden from every point of B: along every ray from B to it,
+//     an occluder comes strictly first (depth grows along the ray). It is culled.
+// Doubles only, and every rounding goes the safe way: the result is conservative by construction,
+// never exact in the sense of the area sort (it culls less than it could, never more).
+//
+// What the views do with it (SourceOptions::culled): a source whose faces are all culled is left
+// out of the area sort. It covers no point that its occluders do not cover strictly nearer, so the
+// visible polygons are the same sets and every line is classified the same way.
+#pragma once
+
+#include <hlr/kernel/errors.hpp>
+#include <hlr/kernel/scene.hpp>
+#include <hlr/kernel/view.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace hlr::hidden_line {
+
+struct FuzzyOptions {
+  int resolution = 400;  // pixels along each side of a fuzzy projection face (Lim: 400)
+  double reach = 2;      // a face of the cube holds the directions with |u|, |w| <= reach
+};
+
+struct FuzzyCull {
+  std::vector<std::vector<bool>> culled;  // per mesh, per face: hidden from every eye of the group
+  std::size_t patches = 0;                // faces of the scene
+  std::size_t culled_faces = 0;
+  std::size_t occluders = 0, regions = 0;  // faces and regions that went into the depth buffer
+  double seconds = 0;
+};
+
+// The faces of `meshes` that no eye in the bounding box of the views' eyes can see. Every view
+// must be a perspective view (View::eye) that can be drawn of the scene (perspective_defect);
+// the near planes are those of the views given. Throws Cancelled when `stop` asks.
+FuzzyCull fuzzy_cull(const std::vector<Mesh>& meshes, const std::vector<View>& views, const FuzzyOptions& options = {},
+                     StopToken stop = {});
+
+}  // namespace hlr::hidden_line

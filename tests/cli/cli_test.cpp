@@ -1202,10 +1202,16 @@ TEST_F(CliDraw, SmoothEdgesThinAndFull) {
   const json bare = lines_of({"--smooth-edges"});
   EXPECT_EQ(bare.at("lines"), full.at("lines"));
   EXPECT_EQ(lines_of({"--smooth-edges", "off"}).at("lines"), off.at("lines"));
-  // A bare --smooth-edges before the meshes, as the flag could be given.
-  Outcome run = hlr({"draw", "--smooth-edges", mesh, "--view", "iso", "-o", out("g.json").string()});
+  // A bare --smooth-edges before the meshes takes the mesh for its value (README: meshes first),
+  // and says so; a bare one before another option is full.
+  Outcome run = hlr({"draw", mesh, "--smooth-edges", "--view", "iso", "-o", out("g.json").string()});
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(json::parse(slurp(out("g.json"))).at("lines"), full.at("lines"));
+  fs::remove(out("g.json"));
+  run = hlr({"draw", "--smooth-edges", mesh, "--view", "iso", "-o", out("g.json").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("put meshes before a bare --smooth-edges"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out("g.json")));
 }
 
 TEST_F(CliDraw, SmoothEdgesBadModeIsAUsageError) {

@@ -138,8 +138,9 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   std::cout << "hlr draw: " << scene.input.faces << " faces, view " << view.name << ", " << method << '\n'
             << "  " << st.lines << " feature lines (" << kind_count(FeatureKind::silhouette) << " silhouette, "
             << kind_count(FeatureKind::crease) << " crease, " << kind_count(FeatureKind::boundary) << " boundary, "
-            << kind_count(FeatureKind::group) << " group, " << kind_count(FeatureKind::intersection)
-            << " intersection)\n"
+            << kind_count(FeatureKind::group) << " group, " << kind_count(FeatureKind::intersection) << " intersection"
+            << (kind_count(FeatureKind::smooth) ? ", " + std::to_string(kind_count(FeatureKind::smooth)) + " smooth" : "")
+            << ")\n"
             << "  " << st.visible_pieces << " visible and " << st.hidden_pieces << " hidden pieces in "
             << drawing.times.total << " s\n";
   if (merged > 0)
@@ -217,8 +218,9 @@ Subcommand add_draw_command(CLI::App& parent) {
       "  hlr draw fixtures/scenes/l_bracket.off --view iso -o out/bracket.svg -o out/bracket.dxf\n"
       "  hlr draw fixtures/parts/anchor.off --view iso --raster 2048 -o out/anchor.png\n"
       "\n"
-      "Feature lines are boundary, crease, silhouette, group and intersection lines; each is split into\n"
-      "visible and hidden pieces exactly. Model units are millimetres unless --units says otherwise.\n"
+      "Feature lines are boundary, crease, silhouette, group and intersection lines (smooth ones too with\n"
+      "--smooth-edges thin, drawn thin); each is split into visible and hidden pieces exactly. Model units\n"
+      "are millimetres unless --units says otherwise.\n"
       "Formats: docs/FORMATS.md.");
   return {cmd, [options] { return run(*options); }};
 }

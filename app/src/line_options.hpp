@@ -8,7 +8,7 @@
 
 namespace hlr::app {
 
-// --crease DEG, --smooth-edges and --no-intersections, into `options`.
+// --crease DEG, --smooth-edges [off|thin|full] and --no-intersections, into `options`.
 void add_line_options(CLI::App& cmd, exporter::DrawOptions& options);
 
 

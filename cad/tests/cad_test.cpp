@@ -142,7 +142,7 @@ TEST(CadImport, FeatureEdgesAreTheBrepEdges) {
     for (const std::string view_name : {"front", "top", "iso"}) {
       for (const bool smooth : {true, false}) {
         FeatureOptions options;
-        options.smooth_edges = smooth;
+        options.smooth_edges = smooth ? SmoothEdges::full : SmoothEdges::off;
         options.crease_degrees = 1;  // must not matter
         const View view = view_named(view_name);
         std::map<std::pair<std::uint32_t, std::uint32_t>, FeatureKind> drawn;
@@ -191,6 +191,43 @@ TEST(CadImport, FeatureEdgesAreTheBrepEdges) {
   }
 }
 
+// --smooth-edges thin: the tangent B-rep edges (Mesh::source_edges bit 2) are kind smooth, and
+// the feature set is full's with those creases made smooth (silhouettes stay silhouettes).
+TEST(CadImport, TangentEdgesAreSmoothEdges) {
+  const Mesh mesh = cad::load_cad(fixture("bracket.step"))[0].mesh;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> tangent;
+  for (std::uint32_t f = 0; f < mesh.faces.size(); ++f)
+    for (std::size_t i = 0; i < mesh.faces[f].size(); ++i)
+      if (mesh.source_edges[f] >> (i + 4) & 1u)
+        tangent.insert(std::minmax(mesh.faces[f][i], mesh.faces[f][(i + 1) % mesh.faces[f].size()]));
+  ASSERT_FALSE(tangent.empty());
+  for (const std::string view_name : {"front", "top", "iso"}) {
+    auto drawn = [&](SmoothEdges mode) {
+      FeatureOptions options;
+      options.smooth_edges = mode;
+      std::map<std::pair<std::uint32_t, std::uint32_t>, FeatureKind> out;
+      for (const FeatureEdge& e : feature_edges(mesh, view_named(view_name), options)) out[{e.v0, e.v1}] = e.kind;
+      return out;
+    };
+    const auto full = drawn(SmoothEdges::full), thin = drawn(SmoothEdges::thin), off = drawn(SmoothEdges::off);
+    ASSERT_EQ(full.size(), thin.size()) << view_name;
+    std::size_t smooth = 0;
+    for (const auto& [edge, kind] : thin) {
+      ASSERT_TRUE(full.count(edge)) << view_name;
+      if (kind == FeatureKind::smooth) {
+        ++smooth;
+        EXPECT_TRUE(tangent.count(edge)) << view_name;
+        EXPECT_EQ(full.at(edge), FeatureKind::crease) << view_name;
+        EXPECT_FALSE(off.count(edge)) << view_name;
+      } else {
+        EXPECT_EQ(full.at(edge), kind) << view_name;
+        EXPECT_TRUE(kind == FeatureKind::silhouette || !tangent.count(edge)) << view_name;
+      }
+    }
+    EXPECT_GT(smooth, 0u) << view_name;
+  }
+}
+
 // The engine on a CAD tessellation against the line oracle, with the drawing's own feature set
 // (the oracle knows Mesh::source_edges too).
 TEST(CadImport, LineOracleOnTheBracket) {
@@ -199,7 +236,7 @@ TEST(CadImport, LineOracleOnTheBracket) {
   coarse.angular_degrees = 30;
   std::vector<Mesh> meshes;
   for (auto& part : cad::load_cad(fixture("bracket.step"), coarse)) meshes.push_back(std::move(part.mesh));
-  for (const bool smooth : {false, true}) {
+  for (const SmoothEdges smooth : {SmoothEdges::off, SmoothEdges::full, SmoothEdges::thin}) {
     for (const std::string view_name : {"front", "iso"}) {
       hidden_line::LineOptions options;
       options.features.smooth_edges = smooth;
@@ -207,8 +244,11 @@ TEST(CadImport, LineOracleOnTheBracket) {
       hltest::LineRun run = hltest::run_lines(meshes, view, options);
       const hltest::LineOracle oracle(meshes, view);
       const hltest::LineReport report = hltest::check_lines(oracle, run.set, hltest::check_options_for(options));
-      EXPECT_TRUE(report.ok()) << view_name << (smooth ? " smooth" : "") << ": " << report.summary();
+      EXPECT_TRUE(report.ok()) << view_name << " smooth " << int(smooth) << ": " << report.summary();
       EXPECT_GT(run.set.lines.size(), 0u);
+      const std::size_t smooth_lines = run.set.stats.by_kind[static_cast<int>(FeatureKind::smooth)];
+      if (smooth == SmoothEdges::thin) EXPECT_GT(smooth_lines, 0u) << view_name;
+      else EXPECT_EQ(smooth_lines, 0u) << view_name;
     }
   }
 }
@@ -316,6 +356,24 @@ TEST(CadCli, StepAndItsMeshDrawAlike) {
       EXPECT_EQ(ja["stats"]["lines_by_kind"]["group"], 0) << name;
     }
   }
+}
+
+// --smooth-edges thin on a STEP: the bracket's fillet boundaries as kind smooth, the visible ones
+// in the SVG's thin group and on the DXF's layer THIN; the other lines as with full.
+TEST(CadCli, SmoothEdgesThinOnAStep) {
+  const Outcome thin = hlr_run({"draw", fixture("bracket.step"), "--smooth-edges", "thin", "--view", "iso", "-o",
+                                out("t.json"), "-o", out("t.svg"), "-o", out("t.dxf")});
+  ASSERT_EQ(thin.exit_code, 0) << thin.err;
+  const Outcome full = hlr_run({"draw", fixture("bracket.step"), "--smooth-edges", "full", "--view", "iso", "-o", out("f.json")});
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  const json jt = json::parse(slurp(out("t.json"))), jf = json::parse(slurp(out("f.json")));
+  EXPECT_GT(jt["stats"]["lines_by_kind"]["smooth"].get<int>(), 0);
+  EXPECT_EQ(jt["stats"]["lines_by_kind"]["crease"].get<int>() + jt["stats"]["lines_by_kind"]["smooth"].get<int>(),
+            jf["stats"]["lines_by_kind"]["crease"].get<int>());
+  EXPECT_EQ(jt["lines"].size(), jf["lines"].size());
+  const std::string svg = slurp(out("t.svg"));
+  EXPECT_NE(svg.find("<g id=\"thin\" class=\"thin\""), std::string::npos);
+  EXPECT_NE(slurp(out("t.dxf")).find("\nTHIN\n"), std::string::npos);
 }
 
 // The line oracle on the tessellation `hlr mesh` writes, read back as a mesh file: its B-rep faces

@@ -394,12 +394,20 @@ DrawingPath straight_path(const DrawingPolyline& chain) {
   path.start = chain.points.front();
   path.closed = chain.closed;
   path.visible = chain.visible;
+  path.thin = chain.thin;
   path.mesh = chain.mesh;
   for (std::size_t k = 1; k < chain.points.size(); ++k) path.steps.push_back({chain.points[k]});
   return path;
 }
 
 }  // namespace
+
+bool has_thin_lines(const DrawingCurves& curves) {
+  auto thin = [](const auto& item) { return item.thin; };
+  return std::any_of(curves.paths.begin(), curves.paths.end(), thin) ||
+         std::any_of(curves.circles.begin(), curves.circles.end(), thin) ||
+         std::any_of(curves.ellipses.begin(), curves.ellipses.end(), thin);
+}
 
 DrawingCurves recover_curves(const std::vector<DrawingPolyline>& chains, double tolerance) {
   DrawingCurves out;
@@ -411,7 +419,7 @@ DrawingCurves recover_curves(const std::vector<DrawingPolyline>& chains, double 
     }
     if (chain.closed) {
       if (const auto c = whole_circle(chain.points, tolerance)) {
-        out.circles.push_back({{c->cx, c->cy}, c->r, chain.visible, chain.mesh});
+        out.circles.push_back({{c->cx, c->cy}, c->r, chain.visible, chain.mesh, chain.thin});
         continue;
       }
       if (nearly_round(chain.points, tolerance)) {
@@ -446,6 +454,7 @@ DrawingCurves recover_curves(const std::vector<DrawingPolyline>& chains, double 
     DrawingPath path;
     path.closed = chain.closed;
     path.visible = chain.visible;
+    path.thin = chain.thin;
     path.mesh = chain.mesh;
     const std::size_t last = chain.closed ? q.size() - 2 : q.size() - 1;  // a closed path's Z goes back to q[0]
     std::size_t k = 0, r = 0;

@@ -224,12 +224,13 @@ void dxf_other_tables(DL_Dxf& dxf, DxfText& out, const std::vector<std::string>&
 }
 
 void dxf_curves(DL_Dxf& dxf, DxfText& out, const DrawingCurves& curves, bool hidden,
-                const std::function<std::string(bool, std::uint32_t)>& layer, double ltscale) {
-  for (const bool visible : {false, true}) {
-    if (!visible && !hidden) continue;
+                const std::function<std::string(int, std::uint32_t)>& layer, double ltscale) {
+  for (const int rank : {1, 2, 0}) {
+    if (rank == 1 && !hidden) continue;
+    auto of_class = [rank](const auto& item) { return item.thin ? rank == 2 : item.visible ? rank == 0 : rank == 1; };
     for (const auto& path : curves.paths) {
-      if (path.visible != visible) continue;
-      const DL_Attributes a(layer(visible, path.mesh), 256, -1, "BYLAYER", ltscale);
+      if (!of_class(path)) continue;
+      const DL_Attributes a(layer(rank, path.mesh), 256, -1, "BYLAYER", ltscale);
       const bool straight = std::none_of(path.steps.begin(), path.steps.end(), [](const PathStep& s) { return s.arc; });
       std::vector<Point2> run{path.start};
       Point2 from = path.start;
@@ -249,14 +250,14 @@ void dxf_curves(DL_Dxf& dxf, DxfText& out, const DrawingCurves& curves, bool hid
       polyline(dxf, out, run, path.closed && straight, a);
     }
     for (const auto& c : curves.circles) {
-      if (c.visible != visible) continue;
+      if (!of_class(c)) continue;
       dxf.writeCircle(out, DL_CircleData(c.centre[0], c.centre[1], 0.0, c.radius),
-                      DL_Attributes(layer(visible, c.mesh), 256, -1, "BYLAYER", ltscale));
+                      DL_Attributes(layer(rank, c.mesh), 256, -1, "BYLAYER", ltscale));
     }
     for (const auto& e : curves.ellipses) {
-      if (e.visible != visible) continue;
+      if (!of_class(e)) continue;
       dxf.writeEllipse(out, DL_EllipseData(e.centre[0], e.centre[1], 0.0, e.major[0], e.major[1], 0.0, e.ratio, e.t0, e.t1),
-                       DL_Attributes(layer(visible, e.mesh), 256, -1, "BYLAYER", ltscale));
+                       DL_Attributes(layer(rank, e.mesh), 256, -1, "BYLAYER", ltscale));
     }
   }
 }

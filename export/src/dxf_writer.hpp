@@ -59,12 +59,13 @@ void dxf_layers(DL_Dxf& dxf, DxfText& out, const std::vector<DxfLayer>& layers);
 // with the user blocks named), ending the TABLES section.
 void dxf_other_tables(DL_Dxf& dxf, DxfText& out, const std::vector<std::string>& blocks);
 
-// The entities of a view's curves, hidden ones first (if `hidden`), so that viewers drawing in
-// file order put the visible lines on top: the straight runs of each path as LWPOLYLINE (closed
-// when the whole path is), arcs as ARC, circles as CIRCLE. `layer` names the layer of a class
-// and part; every entity has the linetype BYLAYER and the linetype scale `ltscale`.
+// The entities of a view's curves, hidden ones first (if `hidden`), then thin ones, so that
+// viewers drawing in file order put the visible lines on top: the straight runs of each path as
+// LWPOLYLINE (closed when the whole path is), arcs as ARC, circles as CIRCLE. `layer` names the
+// layer of a class (precedence_rank: 0 visible, 1 hidden, 2 thin) and part; every entity has the
+// linetype BYLAYER and the linetype scale `ltscale`.
 void dxf_curves(DL_Dxf& dxf, DxfText& out, const DrawingCurves& curves, bool hidden,
-                const std::function<std::string(bool visible, std::uint32_t mesh)>& layer, double ltscale);
+                const std::function<std::string(int rank, std::uint32_t mesh)>& layer, double ltscale);
 void dxf_centre_lines(DL_Dxf& dxf, DxfText& out, const std::vector<CentreLine>& lines, const std::string& layer,
                       double ltscale);
 // Filled areas (shadows) as solid HATCH entities on `layer`, one boundary loop of lines per contour.

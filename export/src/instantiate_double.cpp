@@ -12,8 +12,11 @@ LineDrawing make_raster_drawing(const InputInfo& input, const hidden_line::Raste
   std::vector<hidden_line::DrawnSegment<DoubleKernel>> segments;
   for (const auto& line : lines.lines)
     for (const auto& piece : line.pieces) {
+      // As drawing_segments draws smooth lines: visible pieces thin, hidden ones not at all.
+      const bool smooth = line.kind == FeatureKind::smooth;
+      if (smooth && !piece.visible) continue;
       auto at = [&](double t) { return DoublePoint{line.a.x + t * (line.b.x - line.a.x), line.a.y + t * (line.b.y - line.a.y)}; };
-      segments.push_back({at(piece.t0), at(piece.t1), piece.visible, line.mesh, line.meeting_degrees});
+      segments.push_back({at(piece.t0), at(piece.t1), piece.visible, line.mesh, line.meeting_degrees, 0, smooth});
     }
   LineDrawing drawing = make_drawing<DoubleKernel>(input, raster.frame(), KernelKind::floating, lines, segments);
   const hidden_line::RasterGrid& grid = raster.grid();

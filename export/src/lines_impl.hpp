@@ -81,7 +81,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
       const auto& s = segments[i];
       d.segments[i] = {{frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)},
                        {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)},
-                       s.visible, s.mesh, s.meeting_degrees, s.line};
+                       s.visible, s.mesh, s.meeting_degrees, s.line, -1, s.thin};
     }
   });
   return d;

@@ -63,8 +63,8 @@ void append_lines(Output& output, const std::vector<DrawingPiece>& pieces) {
     out += "[]";
     return;
   }
-  std::string kinds[5];  // each kind's name as a JSON string
-  for (int k = 0; k < 5; ++k) kinds[k] = json(feature_kind_name(static_cast<FeatureKind>(k))).dump();
+  std::string kinds[kFeatureKinds];  // each kind's name as a JSON string
+  for (std::size_t k = 0; k < kFeatureKinds; ++k) kinds[k] = json(feature_kind_name(static_cast<FeatureKind>(k))).dump();
   auto point = [&](const Point3& p) {
     out += "[\n    ";
     detail::append_json_number(out, p[0]);
@@ -106,9 +106,8 @@ void append_lines(Output& output, const std::vector<DrawingPiece>& pieces) {
 json stats_json(const LineDrawing& drawing, double write) {
   const auto& s = drawing.stats;
   json by_kind = json::object();
-  for (auto kind : {FeatureKind::silhouette, FeatureKind::crease, FeatureKind::boundary, FeatureKind::intersection,
-                    FeatureKind::group})
-    by_kind[feature_kind_name(kind)] = s.by_kind[static_cast<std::size_t>(kind)];
+  for (std::size_t kind = 0; kind < kFeatureKinds; ++kind)
+    by_kind[feature_kind_name(static_cast<FeatureKind>(kind))] = s.by_kind[kind];
   const StageTimes& t = drawing.times;
   const json stages =
       drawing.raster ? json{{"read", t.read}, {"intersections", t.intersections}, {"zbuffer", drawing.zbuffer_seconds},

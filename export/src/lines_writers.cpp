@@ -21,11 +21,12 @@
 namespace hlr::exporter {
 namespace {
 
-// Chains of one class; segments of different meshes are never joined (each part's lines are its own).
-std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segments, bool visible) {
+// Chains of one class (precedence_rank); segments of different meshes are never joined (each
+// part's lines are its own).
+std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segments, int rank) {
   std::vector<const DrawingSegment*> mine;  // this class's segments of non-zero length, in input order
   for (const auto& s : segments)
-    if (s.visible == visible && s.a != s.b) mine.push_back(&s);
+    if (precedence_rank(s) == rank && s.a != s.b) mine.push_back(&s);
   // The segments' ends, end 2i being mine[i]'s a and 2i + 1 its b, grouped by mesh and point:
   // sorted stably, so that a point's ends stay in segment order. Exact equality of endpoints:
   // -0.0 and 0.0 are one point, as they should be.
@@ -67,7 +68,8 @@ std::vector<DrawingPolyline> chain_class(const std::vector<DrawingSegment>& segm
     if (used[seed]) continue;
     used[seed] = true;
     DrawingPolyline chain;
-    chain.visible = visible;
+    chain.visible = mine[seed]->visible;
+    chain.thin = mine[seed]->thin;
     chain.mesh = mine[seed]->mesh;
     chain.points = {mine[seed]->a, mine[seed]->b};
     walk(std::uint32_t(2 * seed + 1), seed, chain.points);
@@ -121,9 +123,11 @@ std::optional<Sheet> sheet_by_name(const std::string& name) {
 }
 
 std::vector<DrawingPolyline> chain_segments(const std::vector<DrawingSegment>& segments) {
-  auto chains = chain_class(segments, true);
-  auto hidden = chain_class(segments, false);
-  chains.insert(chains.end(), std::make_move_iterator(hidden.begin()), std::make_move_iterator(hidden.end()));
+  std::vector<DrawingPolyline> chains;
+  for (int rank = 0; rank < 3; ++rank) {
+    auto of_class = chain_class(segments, rank);
+    chains.insert(chains.end(), std::make_move_iterator(of_class.begin()), std::make_move_iterator(of_class.end()));
+  }
   return chains;
 }
 
@@ -159,8 +163,8 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, con
   // pair defined even where it has no line, so that a CAD user finds every part. CENTER always.
   const auto names = part_names(drawing);
   const bool per_part = drawing.input.files.size() > 1;
-  auto layer = [&](bool visible, std::uint32_t mesh) {
-    std::string name = visible ? "VISIBLE" : "HIDDEN";
+  auto layer = [&](int rank, std::uint32_t mesh) {
+    std::string name = rank == 0 ? "VISIBLE" : rank == 1 ? "HIDDEN" : "THIN";
     if (!per_part) return name;
     std::string part = names[mesh];  // part_names names every mesh a segment has
     for (char& c : part) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -168,9 +172,13 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style, con
   };
   const std::uint32_t layer_pairs = per_part ? std::uint32_t(names.size()) : 1;
   std::vector<detail::DxfLayer> layers;
+  // Smooth lines (thin continuous, ISO 128 01.1) have a layer THIN (NAME-THIN per part) when the
+  // drawing has any.
+  const bool thin = has_thin_lines(lines.curves);
   for (std::uint32_t part = 0; part < layer_pairs; ++part) {
-    layers.push_back({layer(true, part), 7, widths.wide, "CONTINUOUS"});
-    layers.push_back({layer(false, part), 8, widths.narrow, "HIDDEN"});
+    layers.push_back({layer(0, part), 7, widths.wide, "CONTINUOUS"});
+    layers.push_back({layer(1, part), 8, widths.narrow, "HIDDEN"});
+    if (thin) layers.push_back({layer(2, part), 7, widths.narrow, "CONTINUOUS"});
   }
   layers.push_back({"CENTER", 1, widths.narrow, "CENTER"});
   if (!lines.shadows.empty()) layers.push_back({"SHADOW", 9, widths.narrow, "CONTINUOUS"});

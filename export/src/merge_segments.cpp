@@ -5,7 +5,7 @@
 // coordinates rounded to a few decimals) give two lines that the exact engine rightly keeps apart,
 // and a sheet would show a dashed line under a solid one, or two solid lines drawn twice, where a
 // drafter draws one. On the sheet, after the one rounding of the result, lines closer than the
-// drawing's resolution are one line, and ISO 128 precedence (visible over hidden) picks which.
+// drawing's resolution are one line, and ISO 128 precedence (visible over hidden over thin) picks which.
 //
 // Each segment S is compared with the already kept segments K near it (a uniform grid over the
 // drawing, cells about one mean segment length wide, each segment listed in the cells its
@@ -174,11 +174,11 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     out.segments = segments;
     return out;
   }
-  // Precedence: visible before hidden, input order within a class.
+  // Precedence: visible, hidden, then thin (precedence_rank), input order within a class.
   std::vector<std::uint32_t> order;
-  for (bool visible : {true, false})
+  for (int rank = 0; rank < 3; ++rank)
     for (std::uint32_t i = 0; i < segments.size(); ++i)
-      if (segments[i].visible == visible) order.push_back(i);
+      if (precedence_rank(segments[i]) == rank) order.push_back(i);
 
   SegmentGrid grid(segments, distance);
   std::vector<DrawingSegment> kept;

@@ -243,13 +243,16 @@ void paint_view(Canvas& c, const SheetLines& lines, const Placement& at, const s
   const LineWidths widths = line_widths(style.line_group).value_or(LineWidths{});
   const DrawingCurves& curves = lines.curves;
   // Each part's lines in a group of its own inside the class's group, so that a part can be
-  // switched off: ids are unique ("part-NAME-visible", "part-NAME-hidden"), the class names the
-  // part in both.
-  auto group = [&](bool visible) {
+  // switched off: ids are unique ("part-NAME-visible", "part-NAME-hidden", "part-NAME-thin"), the
+  // class names the part in all. Classes by precedence_rank: 0 visible, 1 hidden, 2 thin.
+  auto group = [&](int rank) {
+    static const char* const names[] = {"visible", "hidden", "thin"};
+    const std::string name = names[rank];
+    auto of_class = [&](const auto& item) { return item.thin ? rank == 2 : item.visible ? rank == 0 : rank == 1; };
     GroupStyle g;
-    g.id = prefix + (visible ? "visible" : "hidden");
-    if (!prefix.empty()) g.cls = visible ? "visible" : "hidden";
-    g.pen = visible ? pen_of(widths.wide) : pen_of(widths.narrow, widths.hidden_dashes);
+    g.id = prefix + name;
+    if (!prefix.empty() || rank == 2) g.cls = name;
+    g.pen = rank == 0 ? pen_of(widths.wide) : rank == 1 ? pen_of(widths.narrow, widths.hidden_dashes) : pen_of(widths.narrow);
     g.line_caps = true;
     c.begin(g);
     for (std::uint32_t part = 0; part < parts.size(); ++part) {
@@ -257,20 +260,20 @@ void paint_view(Canvas& c, const SheetLines& lines, const Placement& at, const s
       auto open_group = [&] {
         if (open) return;
         open = true;
-        c.begin(GroupStyle::named(prefix + "part-" + parts[part] + (visible ? "-visible" : "-hidden"), "part-" + parts[part]));
+        c.begin(GroupStyle::named(prefix + "part-" + parts[part] + "-" + name, "part-" + parts[part]));
       };
       for (const auto& p : curves.paths) {
-        if (p.visible != visible || p.mesh != part) continue;
+        if (!of_class(p) || p.mesh != part) continue;
         open_group();
         c.path(sheet_path(p, at));
       }
       for (const auto& circle : curves.circles) {
-        if (circle.visible != visible || circle.mesh != part) continue;
+        if (!of_class(circle) || circle.mesh != part) continue;
         open_group();
         c.circle(at.x(circle.centre[0]), at.y(circle.centre[1]), at.scale * circle.radius);
       }
       for (const auto& e : curves.ellipses) {
-        if (e.visible != visible || e.mesh != part) continue;
+        if (!of_class(e) || e.mesh != part) continue;
         open_group();
         c.path(sheet_ellipse(e, at));
       }
@@ -299,8 +302,9 @@ void paint_view(Canvas& c, const SheetLines& lines, const Placement& at, const s
     }
     c.end();
   }
-  if (style.hidden) group(false);  // below the visible lines
-  group(true);
+  if (style.hidden) group(1);  // below the visible lines
+  if (has_thin_lines(curves)) group(2);  // smooth lines, thin continuous: only when there are any
+  group(0);
   if (lines.centre_lines.empty()) return;
   // Centre lines: a long dash centred on each line's middle (where marks cross at the centre).
   GroupStyle g;

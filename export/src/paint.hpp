@@ -55,9 +55,10 @@ struct Placement {
   double y(double vy) const { return oy - (vy - ry) * scale; }
 };
 
-// A view's lines: the shadows (filled, if the drawing has any), the hidden group (if style.hidden), the visible group and the centre-line group
-// (if it has any), each with a group per part. `prefix` starts the groups' ids ("" for hlr draw's
-// "hidden", "visible", "center"; "view-front-" in a sheet).
+// A view's lines: the shadows (filled, if the drawing has any), the hidden group (if
+// style.hidden), the thin group (smooth lines, if it has any), the visible group and the
+// centre-line group (if it has any), each with a group per part. `prefix` starts the groups' ids
+// ("" for hlr draw's "hidden", "thin", "visible", "center"; "view-front-" in a sheet).
 void paint_view(Canvas& canvas, const SheetLines& lines, const Placement& at, const std::vector<std::string>& parts,
                 const DrawingStyle& style, const std::string& prefix);
 

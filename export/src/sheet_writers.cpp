@@ -5,6 +5,7 @@
 #include "dxf_writer.hpp"
 #include "paint.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 namespace hlr::exporter {
@@ -60,11 +61,14 @@ std::string sheet_dxf(const SheetLayout& layout, const SheetSpec& spec) {
   body.sectionTables();
   dxf.writeVPort(body);
   detail::dxf_linetypes(dxf, body, widths);
-  detail::dxf_layers(dxf, body,
-                     {{"VISIBLE", 7, widths.wide, "CONTINUOUS"},
-                      {"HIDDEN", 8, widths.narrow, "HIDDEN"},
-                      {"CENTER", 1, widths.narrow, "CENTER"},
-                      {"BORDER", 7, detail::frame_width, "CONTINUOUS"}});
+  std::vector<detail::DxfLayer> layers{{"VISIBLE", 7, widths.wide, "CONTINUOUS"},
+                                       {"HIDDEN", 8, widths.narrow, "HIDDEN"},
+                                       {"CENTER", 1, widths.narrow, "CENTER"},
+                                       {"BORDER", 7, detail::frame_width, "CONTINUOUS"}};
+  // Smooth lines (thin continuous, ISO 128 01.1): a layer of their own, when a view has any.
+  if (std::any_of(layout.views.begin(), layout.views.end(), [](const PlacedView& v) { return has_thin_lines(v.lines.curves); }))
+    layers.push_back({"THIN", 7, widths.narrow, "CONTINUOUS"});
+  detail::dxf_layers(dxf, body, layers);
   std::vector<std::string> blocks;
   for (const auto& v : layout.views) blocks.push_back("VIEW_" + upper(v.name));
   detail::dxf_other_tables(dxf, body, blocks);
@@ -79,7 +83,8 @@ std::string sheet_dxf(const SheetLayout& layout, const SheetSpec& spec) {
     const PlacedView& v = layout.views[i];
     dxf.writeBlock(body, DL_BlockData(blocks[i], 0, 0.0, 0.0, 0.0));
     detail::dxf_curves(dxf, body, v.lines.curves, style.hidden,
-                       [](bool visible, std::uint32_t) { return std::string(visible ? "VISIBLE" : "HIDDEN"); }, ltscale);
+                       [](int rank, std::uint32_t) { return std::string(rank == 0 ? "VISIBLE" : rank == 1 ? "HIDDEN" : "THIN"); },
+                       ltscale);
     detail::dxf_centre_lines(dxf, body, v.lines.centre_lines, "CENTER", ltscale);
     dxf.writeEndBlock(body, blocks[i]);
   }

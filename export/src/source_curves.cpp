@@ -74,6 +74,7 @@ DrawingPath straight_path(const DrawingPolyline& chain) {
   for (std::size_t k = 1; k < chain.points.size(); ++k) path.steps.push_back({chain.points[k]});
   path.closed = chain.closed;
   path.visible = chain.visible;
+  path.thin = chain.thin;
   path.mesh = chain.mesh;
   return path;
 }
@@ -87,7 +88,7 @@ void add_run(const ViewCurve& c, const DrawingPolyline& chain, DrawingCurves& ou
   const bool ccw = turn > 0;
   if (c.face_on) {
     if (chain.closed) {
-      out.circles.push_back({c.centre, c.radius, chain.visible, chain.mesh});
+      out.circles.push_back({c.centre, c.radius, chain.visible, chain.mesh, chain.thin});
       return;
     }
     auto on_circle = [&](const Point2& q, Point2& at) {
@@ -106,12 +107,13 @@ void add_run(const ViewCurve& c, const DrawingPolyline& chain, DrawingCurves& ou
     step.arc = true, step.centre = c.centre, step.radius = c.radius, step.ccw = ccw;
     path.steps.push_back(step);
     path.visible = chain.visible;
+    path.thin = chain.thin;
     path.mesh = chain.mesh;
     out.paths.push_back(std::move(path));
     ++out.arcs;
     return;
   }
-  DrawingEllipse e{c.centre, c.major, c.ratio, 0, 2 * std::numbers::pi, chain.closed, chain.visible, chain.mesh};
+  DrawingEllipse e{c.centre, c.major, c.ratio, 0, 2 * std::numbers::pi, chain.closed, chain.visible, chain.mesh, chain.thin};
   if (!chain.closed) {
     // The parameter of a point's direction from the centre: its coordinates along the major and
     // the minor axis, the minor one stretched to the major's length.
@@ -163,9 +165,10 @@ namespace detail {
 std::vector<DrawingSegment> draw_source_curves(const LineDrawing& drawing, const std::vector<DrawingSegment>& segments,
                                                DrawingCurves& curves) {
   std::vector<DrawingSegment> rest;
-  std::map<std::pair<std::int32_t, bool>, std::vector<DrawingSegment>> runs;  // (curve, hidden): visible first
+  std::map<std::pair<std::int32_t, int>, std::vector<DrawingSegment>> runs;  // (curve, precedence_rank)
   for (const DrawingSegment& s : segments) {
-    if (s.curve >= 0 && drawn_as_curve(drawing.source_curves[std::size_t(s.curve)])) runs[{s.curve, !s.visible}].push_back(s);
+    if (s.curve >= 0 && drawn_as_curve(drawing.source_curves[std::size_t(s.curve)]))
+      runs[{s.curve, precedence_rank(s)}].push_back(s);
     else rest.push_back(s);
   }
   for (const auto& [key, run] : runs)

@@ -341,7 +341,7 @@ TEST(LinesJson, FieldByField) {
                                       {"lines", 0.375}, {"precedence", 0.0}, {"write", 0.0}}));
   EXPECT_EQ(s["lines"], 2);
   EXPECT_EQ(s["lines_by_kind"],
-            json({{"silhouette", 0}, {"crease", 1}, {"boundary", 0}, {"intersection", 1}, {"group", 0}}));
+            json({{"silhouette", 0}, {"crease", 1}, {"boundary", 0}, {"intersection", 1}, {"group", 0}, {"smooth", 0}}));
   EXPECT_EQ(s["lines_seen_end_on"], 3);
   EXPECT_EQ(s["visible_pieces"], 1);
   EXPECT_EQ(s["hidden_pieces"], 1);
@@ -420,7 +420,7 @@ std::string lines_json_as_one_tree(const LineDrawing& drawing) {
   const auto& s = drawing.stats;
   json by_kind = json::object();
   for (auto kind : {FeatureKind::silhouette, FeatureKind::crease, FeatureKind::boundary, FeatureKind::intersection,
-                    FeatureKind::group})
+                    FeatureKind::group, FeatureKind::smooth})
     by_kind[feature_kind_name(kind)] = s.by_kind[static_cast<std::size_t>(kind)];
   const StageTimes& t = drawing.times;
   const json stages =
@@ -480,7 +480,7 @@ LineDrawing random_drawing(std::uint32_t seed, std::size_t pieces) {
     p.a = {number(), number(), number()};
     p.b = {number(), number(), number()};
     p.visible = rng() % 2;
-    p.kind = static_cast<FeatureKind>(rng() % 5);
+    p.kind = static_cast<FeatureKind>(rng() % kFeatureKinds);
     p.mesh = std::uint32_t(rng() % 3);
     p.has_edge = rng() % 4 != 0;
     p.edge = {std::uint32_t(rng()), i % 7 ? std::uint32_t(rng() % 100) : 0xffffffffu};
@@ -757,6 +757,63 @@ TEST(MergeSegments, HiddenUnderANearlyCoincidentVisibleLineIsDropped) {
   EXPECT_TRUE(r.segments[0].visible);
   EXPECT_EQ(r.segments[0].mesh, 0u);
   EXPECT_EQ(r.merged, 1u);
+}
+
+// Smooth lines (thin) give way to hidden lines as to visible ones (ISO 128-20's precedence).
+DrawingSegment thin_seg(Point2 a, Point2 b, std::uint32_t mesh = 0) {
+  DrawingSegment s = seg(a, b, true, mesh);
+  s.thin = true;
+  return s;
+}
+
+TEST(MergeSegments, ThinUnderANearlyCoincidentHiddenOrVisibleLineIsDropped) {
+  for (const bool visible : {true, false}) {
+    const auto r = merge_segments({thin_seg({0, 0}, {10, 0}), seg({0, 1e-7}, {10, 1e-7}, visible)}, 0.01);
+    ASSERT_EQ(r.segments.size(), 1u) << visible;
+    EXPECT_FALSE(r.segments[0].thin);
+    EXPECT_EQ(r.segments[0].visible, visible);
+  }
+  // A thin line alone stays; two thin ones are one.
+  EXPECT_EQ(merge_segments({thin_seg({0, 0}, {10, 0}), thin_seg({0, 1e-7}, {10, 1e-7})}, 0.01).segments.size(), 1u);
+}
+
+TEST(Chaining, ThinIsAClassOfItsOwnAfterHidden) {
+  const auto chains = chain_segments({thin_seg({1, 0}, {2, 0}), seg({0, 0}, {1, 0}, true), seg({2, 0}, {3, 0}, false),
+                                      thin_seg({2, 0}, {1.5, 1})});
+  ASSERT_EQ(chains.size(), 3u);
+  EXPECT_TRUE(chains[0].visible && !chains[0].thin);
+  EXPECT_FALSE(chains[1].visible);
+  EXPECT_TRUE(chains[2].visible && chains[2].thin);
+  EXPECT_EQ(chains[2].points, (std::vector<Point2>{{1, 0}, {2, 0}, {1.5, 1}}));
+}
+
+// The thin group: continuous narrow (01.1), between the hidden and the visible group, only when
+// the drawing has thin lines; the DXF's layer THIN likewise.
+TEST(LinesSvg, ThinGroupAndDxfLayerOnlyWithThinLines) {
+  LineDrawing d = box_with_hidden_hole();
+  const std::string plain_svg = lines_svg(d, a4()), plain_dxf = lines_dxf(d, a4());
+  EXPECT_EQ(plain_svg.find("thin"), std::string::npos);
+  EXPECT_FALSE(read_dxf(plain_dxf).layers.count("THIN"));
+  d.segments.push_back(thin_seg({10, 10}, {90, 10}));
+  const SvgDocument doc = parse_svg(lines_svg(d, a4()));
+  ASSERT_TRUE(doc.well_formed) << doc.error;
+  const SvgElement* thin = doc.find("g", "thin");
+  ASSERT_TRUE(thin);
+  EXPECT_EQ(thin->attributes.at("class"), "thin");
+  EXPECT_EQ(thin->attributes.at("stroke-width"), "0.25");
+  EXPECT_EQ(thin->attributes.count("stroke-dasharray"), 0u);
+  EXPECT_LT(doc.position("g", "hidden"), doc.position("g", "thin"));
+  EXPECT_LT(doc.position("g", "thin"), doc.position("g", "visible"));
+  EXPECT_EQ(doc.in_group("path", "thin").size(), 1u);
+  EXPECT_EQ(doc.in_group("path", "visible").size(), 1u);  // the outline only
+  EXPECT_TRUE(doc.find("g", "part-part-thin"));
+  const DxfReadBack back = read_dxf(lines_dxf(d, a4()));
+  ASSERT_TRUE(back.layers.count("THIN"));
+  EXPECT_EQ(back.layer_linetype.at("THIN"), "CONTINUOUS");
+  EXPECT_EQ(back.layer_lineweight.at("THIN"), 25);
+  std::size_t on_thin = 0;
+  for (const auto& p : back.polylines) on_thin += p.layer == "THIN";
+  EXPECT_EQ(on_thin, 1u);
 }
 
 TEST(MergeSegments, DuplicateOfOneClassKeepsTheFirst) {

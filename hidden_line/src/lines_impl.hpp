@@ -498,6 +498,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     std::uint32_t line;
     FT t0, t1;
     bool visible;
+    bool thin;
   };
   std::vector<detail::ImageLine<K>> images;
   images.reserve(lines.lines.size());
@@ -507,10 +508,15 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     images.emplace_back(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y));
     if (!l.pieces.empty()) domain += images.back().bbox();
   }
-  for (bool visible : {true, false})
-    for (std::uint32_t i = 0; i < lines.lines.size(); ++i)
+  // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
+  // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
+  for (int pass = 0; pass < 3; ++pass)
+    for (std::uint32_t i = 0; i < lines.lines.size(); ++i) {
+      const bool smooth = lines.lines[i].kind == FeatureKind::smooth;
+      if (smooth != (pass == 2) || (smooth && pass == 1)) continue;
       for (const auto& p : lines.lines[i].pieces)
-        if (p.visible == visible) spans.push_back({i, p.t0, p.t1, visible});
+        if (p.visible == (pass != 1)) spans.push_back({i, p.t0, p.t1, p.visible, smooth});
+    }
 
   // Whether two lines' images are collinear, decided on their own ends: on the input coordinates
   // where both are mesh edges (exact zeros there are common, and cheap), else on the images.
@@ -527,7 +533,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     return G::orientation(a.a, a.b, b.a) == 0 && G::orientation(a.a, a.b, b.b) == 0;
   };
 
-  // Visible spans first, then hidden ones; each loses what earlier, collinear spans already draw.
+  // Spans in precedence order; each loses what earlier, collinear spans already draw.
   // Pieces of one line never overlap. Only spans of collinear lines whose boxes overlap interact,
   // and lines joined by such pairs all lie on one image line (collinearity is exact, so
   // transitive): each such group is solved on its own, in parallel, and the segments gathered in
@@ -605,7 +611,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       const FeatureLine<K>& line = lines.lines[span.line];
       const auto a = image.at(span.t0), b = image.at(span.t1);
       if (alone) {
-        emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees, span.line});
+        emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees, span.line, span.thin});
         continue;
       }
       std::vector<std::pair<FT, FT>> covered;
@@ -626,7 +632,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       bool at_start = true;  // from is span.t0, whose point is a
       auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
         const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
-                                line.meeting_degrees, span.line};
+                                line.meeting_degrees, span.line, span.thin};
         grid->insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
         out.push_back(d);
         drawn_line.push_back(span.line);

@@ -294,13 +294,14 @@ RasterImage RasterDrawing::pbuffer(DashPattern pattern) const {
 
   if (pattern == DashPattern::arc_length) {
     // Hidden dashes first, then visible lines over them (ISO 128 precedence); each line is
-    // classified once.
+    // classified once. Smooth lines' hidden pieces are not drawn (lines.hpp, drawing_segments).
     std::vector<std::vector<char>> classes;
     classes.reserve(d.lines.size());
     for (const RasterLine& r : d.lines) classes.push_back(d.sample_classes(r));
     for (const bool visible_pass : {false, true})
       for (std::size_t i = 0; i < d.lines.size(); ++i) {
         const RasterLine& r = d.lines[i];
+        if (!visible_pass && r.line.kind == FeatureKind::smooth) continue;
         const std::vector<char>& visible = classes[i];
         for_each_pixel_step(g, r.a[0], r.a[1], r.b[0], r.b[1], [&](int column, int row, long k, long) {
           if (visible[std::size_t(k)] != visible_pass) return;

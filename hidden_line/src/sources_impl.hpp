@@ -33,25 +33,8 @@ struct MeshTopology {
 using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 inline MeshTopology analyse_mesh(const Mesh& mesh) {
-  const std::size_t nf = mesh.faces.size();
   MeshTopology t;
-  auto point = [&](std::uint32_t v) {
-    const auto& p = mesh.vertices[v];
-    return IK::Point_3(p[0], p[1], p[2]);
-  };
   t.uses = edge_uses(mesh);
-
-  t.plane_vertices.resize(nf);
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    const auto& face = mesh.faces[f];
-    t.plane_vertices[f] = {face[0], face[1], face[2]};
-    for (std::size_t k = 2; k < face.size(); ++k) {
-      if (!CGAL::collinear(point(face[0]), point(face[1]), point(face[k]))) {
-        t.plane_vertices[f] = {face[0], face[1], face[k]};
-        break;
-      }
-    }
-  }
 
   const ComponentSides sides = component_sides(mesh, t.uses);
   t.outward = sides.outward;
@@ -59,24 +42,11 @@ inline MeshTopology analyse_mesh(const Mesh& mesh) {
   t.open_components = sides.open;
   t.inward_components = sides.inward;
 
-  // Coplanar groups: faces joined across an edge they run in opposite directions, with every
-  // corner of one in the plane of the other.
-  UnionFind groups(nf);
-  auto in_plane = [&](std::uint32_t f, std::uint32_t g) {
-    const auto& pv = t.plane_vertices[f];
-    const IK::Point_3 a = point(pv[0]), b = point(pv[1]), c = point(pv[2]);
-    for (std::uint32_t v : mesh.faces[g])
-      if (v != pv[0] && v != pv[1] && v != pv[2] && !CGAL::coplanar(a, b, c, point(v))) return false;
-    return true;
-  };
-  for_each_edge(t.uses, [&](EdgeUses first, EdgeUses last) {
-    if (last - first != 2) return;
-    const EdgeUse& u = first[0];
-    const EdgeUse& w = first[1];
-    if (u.forward != w.forward && u.face != w.face && in_plane(u.face, w.face)) groups.join(u.face, w.face);
-  });
-  t.coplanar_group.resize(nf);
-  for (std::uint32_t f = 0; f < nf; ++f) t.coplanar_group[f] = groups.find(f);
+  // Coplanar groups (mesh_edges.hpp): faces joined across an edge they run in opposite
+  // directions, with every corner of one in the plane of the other.
+  CoplanarGroups groups = coplanar_groups(mesh, t.uses);
+  t.plane_vertices = std::move(groups.plane_vertices);
+  t.coplanar_group = std::move(groups.group);
   return t;
 }
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -21,6 +22,7 @@ const char* kind_text(FeatureKind kind) {
     case FeatureKind::boundary: return "boundary";
     case FeatureKind::intersection: return "intersection";
     case FeatureKind::group: return "group";
+    case FeatureKind::smooth: return "smooth";
   }
   return "?";
 }
@@ -124,13 +126,94 @@ bool dihedral_above(const EK::Vector_3& n1, const EK::Vector_3& n2, double c) {
   return dot * dot > c2P;
 }
 
+
+// The smooth-edge rule of meshes (features.hpp), by brute force on Epeck: coplanar groups by a
+// union-find over the edges, every corner tested against every line.
+class OracleSurfaces {
+ public:
+  using Key = std::pair<std::uint32_t, std::uint32_t>;
+  using Uses = std::vector<std::pair<std::uint32_t, bool>>;
+
+  OracleSurfaces(const Mesh& mesh, const std::map<Key, Uses>& edges) : mesh_(mesh), root_(mesh.faces.size()) {
+    for (std::uint32_t f = 0; f < root_.size(); ++f) root_[f] = f;
+    for (const auto& [key, uses] : edges)
+      if (uses.size() == 2 && uses[0].second != uses[1].second && coplanar(uses[0].first, uses[1].first)) {
+        const std::uint32_t a = find(uses[0].first), b = find(uses[1].first);
+        root_[std::max(a, b)] = std::min(a, b);
+      }
+  }
+
+  std::uint32_t find(std::uint32_t f) const {
+    while (root_[f] != f) f = root_[f];
+    return f;
+  }
+
+  // Every corner of g in the plane of f.
+  bool coplanar(std::uint32_t f, std::uint32_t g) const {
+    const auto& face = mesh_.faces[f];
+    for (std::size_t k = 2; k < face.size(); ++k) {
+      if (CGAL::collinear(point(face[0]), point(face[1]), point(face[k]))) continue;
+      for (std::uint32_t v : mesh_.faces[g])
+        if (!CGAL::coplanar(point(face[0]), point(face[1]), point(face[k]), point(v))) return false;
+      return true;
+    }
+    return false;
+  }
+
+  void add_soft(const Key& edge, std::uint32_t f, std::uint32_t g) { soft_.push_back({edge, {find(f), find(g)}}); }
+
+  bool smooth(const Key& edge, std::uint32_t f, std::uint32_t g) const {
+    const std::uint32_t rf = find(f), rg = find(g);
+    const bool sf = strip(rf, edge), sg = strip(rg, edge);
+    return (sf && !sg && !lone_triangle(rg)) || (sg && !sf && !lone_triangle(rf));
+  }
+
+ private:
+  P3 point(std::uint32_t v) const {
+    const auto& p = mesh_.vertices[v];
+    return P3(p[0], p[1], p[2]);
+  }
+
+  bool lone_triangle(std::uint32_t root) const {
+    std::size_t faces = 0;
+    for (std::uint32_t f = 0; f < root_.size(); ++f) faces += find(f) == root;
+    return faces == 1 && mesh_.faces[root].size() == 3;
+  }
+
+  // Every corner of the group on the edge's line or on one parallel line that carries a soft edge
+  // of the group.
+  bool strip(std::uint32_t root, const Key& edge) const {
+    const P3 a = point(edge.first), b = point(edge.second);
+    std::set<std::uint32_t> off;
+    for (std::uint32_t f = 0; f < root_.size(); ++f)
+      if (find(f) == root)
+        for (std::uint32_t v : mesh_.faces[f])
+          if (!CGAL::collinear(a, b, point(v))) off.insert(v);
+    if (off.empty()) return false;
+    const P3 p = point(*off.begin());
+    auto on_far_line = [&](std::uint32_t v) {
+      return !CGAL::collinear(a, b, point(v)) && CGAL::cross_product(b - a, point(v) - p) == CGAL::NULL_VECTOR;
+    };
+    for (std::uint32_t v : off)
+      if (!on_far_line(v)) return false;
+    for (const auto& [e, roots] : soft_)
+      if ((roots.first == root || roots.second == root) && on_far_line(e.first) && on_far_line(e.second)) return true;
+    return false;
+  }
+
+  const Mesh& mesh_;
+  std::vector<std::uint32_t> root_;
+  std::vector<std::pair<Key, Key>> soft_;  // (edge, its two groups)
+};
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Feature edges.
 
 std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, const View& view, double crease_degrees,
-                                           bool smooth_edges) {
+                                           SmoothEdges smooth_edges) {
+  const FeatureKind smooth_kind = smooth_edges == SmoothEdges::thin ? FeatureKind::smooth : FeatureKind::crease;
   const double cos_threshold = std::cos(crease_degrees * std::numbers::pi / 180.0);
   const ExactViewBasis basis(view);
   std::vector<OracleFeature> out;
@@ -160,6 +243,20 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
         if (!mesh.source_edges.empty() && i < 4 && (mesh.source_edges[f] >> i & 1u))
           source[{std::min(p, q), std::max(p, q)}] |= 1u | ((mesh.source_edges[f] >> (i + 4) & 1u) << 1);
       }
+    }
+    // Soft edges (features.hpp) first: the smooth rule needs the strips' far edges.
+    std::optional<OracleSurfaces> surfaces;
+    auto soft = [&](const auto& key, const auto& uses) {
+      if (uses.size() != 2 || fan.at(key)) return false;
+      const auto [f, f_up] = uses[0];
+      const auto [g, g_up] = uses[1];
+      const EK::Vector_3 ng = f_up == g_up ? -normal[g] : normal[g];
+      return surfaces->find(f) != surfaces->find(g) && !dihedral_above(normal[f], ng, cos_threshold) && !surfaces->coplanar(f, g);
+    };
+    if (smooth_edges != SmoothEdges::off && mesh.source_edges.empty()) {
+      surfaces.emplace(mesh, edges);
+      for (const auto& [key, uses] : edges)
+        if (soft(key, uses)) surfaces->add_soft(key, uses[0].first, uses[1].first);
     }
     for (const auto& [key, uses] : edges) {
       OracleFeature e;
@@ -193,12 +290,14 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
           // B-rep edges, whatever the angle; tangent ones only with smooth edges (features.hpp).
           const auto s = source.find(key);
           const unsigned bits = s == source.end() ? 0u : s->second;
-          if (!(bits & 1u) || ((bits & 2u) && !smooth_edges)) continue;
-          e.kind = FeatureKind::crease;
+          if (!(bits & 1u) || ((bits & 2u) && smooth_edges == SmoothEdges::off)) continue;
+          e.kind = bits & 2u ? smooth_kind : FeatureKind::crease;
         } else if (dihedral_above(nf, ng, cos_threshold)) {
           e.kind = FeatureKind::crease;
         } else if (!mesh.face_group.empty() && mesh.face_group[f] != mesh.face_group[g]) {
           e.kind = FeatureKind::group;
+        } else if (surfaces && soft(key, uses) && surfaces->smooth(key, f, g)) {
+          e.kind = smooth_kind;
         } else {
           continue;
         }
@@ -686,10 +785,10 @@ class LineChecker {
 
   void stats() {
     const auto& s = set_.stats;
-    std::size_t by_kind[5] = {}, point = 0, vis = 0, hid = 0;
+    std::size_t by_kind[kFeatureKinds] = {}, point = 0, vis = 0, hid = 0;
     for (const Line& l : set_.lines) {
       const auto k = static_cast<std::size_t>(l.kind);
-      if (k < 5) ++by_kind[k];
+      if (k < kFeatureKinds) ++by_kind[k];
       if (image(l.a) == image(l.b)) ++point;
       for (const auto& p : l.pieces) ++(p.visible ? vis : hid);
     }
@@ -697,7 +796,7 @@ class LineChecker {
       if (have != want) fail("stats", std::string(what) + " says " + std::to_string(have) + ", the lines have " + std::to_string(want));
     };
     expect("lines", s.lines, set_.lines.size());
-    for (int k = 0; k < 5; ++k)
+    for (std::size_t k = 0; k < kFeatureKinds; ++k)
       expect(kind_text(static_cast<FeatureKind>(k)), s.by_kind[k], by_kind[k]);
     expect("point_in_view", s.point_in_view, point);
     expect("visible_pieces", s.visible_pieces, vis);

@@ -98,8 +98,9 @@ struct OracleFeature {
 // the same direction (inconsistent orientation), the face with the lower index keeps its
 // orientation and the other is flipped; this matters only for the silhouette test when one of the
 // two faces is seen edge-on (features.hpp does not say which face is flipped).
+// Smooth edges (features.hpp) as `smooth_edges` says: off, as kind smooth (thin) or as crease (full).
 std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, const View& view, double crease_degrees,
-                                           bool smooth_edges = false);
+                                           SmoothEdges smooth_edges = SmoothEdges::off);
 
 // ---------------------------------------------------------------------------------------------
 // Penetrations (view-independent; compute once per scene).
@@ -184,7 +185,7 @@ class LineOracle {
 
 struct LineCheckOptions {
   double crease_degrees = 30;  // as given to classify_lines
-  bool smooth_edges = false;   // likewise (CAD meshes' tangent edges)
+  SmoothEdges smooth_edges = SmoothEdges::off;  // likewise (smooth edges)
   bool intersections = true;   // as given to classify_lines; false: no intersection line may appear
   bool completeness = true;    // (d) completeness (needs find_penetrations)
   std::size_t max_messages = 12;

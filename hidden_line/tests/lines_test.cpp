@@ -348,6 +348,24 @@ std::map<FeatureKind, std::size_t> kind_counts(const std::vector<OracleFeature>&
   return out;
 }
 
+// --smooth-edges thin on the filleted bracket (fixtures/parts/): the engine against the oracle,
+// which finds the smooth edges by its own brute-force rule; the tangent lines in every view (seen
+// end-on in the front and back views: lines without pieces).
+TEST(LinesHand, SmoothEdgesOfTheFilletedBracket) {
+  const auto meshes = scene_meshes(std::string(HLR_PART_FIXTURES) + "/filleted_bracket.off");
+  LineOptions options;
+  options.features.smooth_edges = SmoothEdges::thin;
+  for (const char* name : {"front", "back", "top", "bottom", "left", "right", "iso"}) {
+    const LineSetX set = run_and_check(meshes, view_named(name), "filleted_bracket", options);
+    // Four tangent lines; in views where one of them lies beside a face seen edge-on it is a
+    // silhouette instead (features.hpp: silhouette first).
+    const std::size_t smooth = set.stats.by_kind[static_cast<int>(FeatureKind::smooth)];
+    EXPECT_TRUE(smooth == 3 || smooth == 4) << name << ": " << smooth;
+  }
+  EXPECT_EQ(kind_counts(oracle_features(meshes, view_named("iso"), 30, SmoothEdges::thin))[FeatureKind::smooth], 4u);
+  EXPECT_EQ(kind_counts(oracle_features(meshes, view_named("iso"), 30, SmoothEdges::off))[FeatureKind::smooth], 0u);
+}
+
 TEST(LineOracle, FeaturesOfTheCube) {
   const auto& meshes = fixture("cube.off");
   using K = FeatureKind;

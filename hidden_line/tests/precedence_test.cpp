@@ -109,5 +109,52 @@ TEST(Precedence, SharedCadParts) {
   }
 }
 
+// Smooth lines (--smooth-edges thin) on the filleted bracket: their visible pieces are drawn as
+// thin segments, after visible and hidden lines (a thin segment overlaps no piece of another
+// line), their hidden pieces not at all; every other segment lies on a piece of a line that is
+// not smooth, and every visible smooth piece is drawn by a segment of some class.
+TEST(Precedence, SmoothLinesAreThinAndLast) {
+  const auto meshes = load(std::filesystem::path(HLR_PART_FIXTURES) / "filleted_bracket.off");
+  hidden_line::LineOptions options;
+  options.features.smooth_edges = SmoothEdges::thin;
+  std::size_t thin_drawn = 0;
+  for (const char* name : kViews) {
+    View view;
+    ASSERT_TRUE(named_view(name, view));
+    SCOPED_TRACE(name);
+    const ViewFrame<K> frame(view);
+    auto sources = hidden_line::build_sources<K>(meshes, frame);
+    const auto map = hidden_line::area_sort<K>(sources);
+    const auto lines = hidden_line::classify_lines<K>(meshes, frame, sources, map, {}, options);
+    const auto drawn = hidden_line::drawing_segments<K>(lines);
+    std::vector<Segment> smooth_visible, others;  // pieces
+    for (const auto& l : lines.lines)
+      for (const auto& p : l.pieces) {
+        auto at = [&](const G::FT& t) { return P(l.a.x + t * (l.b.x - l.a.x), l.a.y + t * (l.b.y - l.a.y)); };
+        if (l.kind != FeatureKind::smooth) others.push_back({at(p.t0), at(p.t1)});
+        else if (p.visible) smooth_visible.push_back({at(p.t0), at(p.t1)});
+      }
+    for (const auto& d : drawn) {
+      const Segment s{d.a, d.b};
+      const bool smooth = d.line < lines.lines.size() && lines.lines[d.line].kind == FeatureKind::smooth;
+      EXPECT_EQ(d.thin, smooth);
+      bool lies_on_piece = false;
+      for (const Segment& p : smooth ? smooth_visible : others) lies_on_piece |= on(p, s.a) && on(p, s.b);
+      EXPECT_TRUE(lies_on_piece) << (smooth ? "a thin segment is on no visible smooth piece" : "a segment is on no piece");
+      if (!d.thin) continue;
+      ++thin_drawn;
+      EXPECT_TRUE(d.visible);
+      for (const Segment& p : others) EXPECT_FALSE(overlap(s, p)) << "a thin segment is drawn over another line";
+    }
+    for (const Segment& p : smooth_visible) {
+      const P mid = G::midpoint(p.a, p.b);
+      bool drawn_there = false;
+      for (const auto& d : drawn) drawn_there |= on({d.a, d.b}, mid);
+      EXPECT_TRUE(drawn_there) << "a visible smooth piece is not drawn";
+    }
+  }
+  EXPECT_GT(thin_drawn, 0u);
+}
+
 }  // namespace
 }  // namespace hlr::hltest

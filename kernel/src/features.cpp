@@ -3,7 +3,11 @@
 #include <hlr/kernel/mesh_edges.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+
+#include <unordered_map>
 
 #include <array>
 #include <cmath>
@@ -110,6 +114,121 @@ class FaceNormals {
   std::vector<int> facing_;
 };
 
+
+// The smooth-edge rule of meshes (features.hpp), on the coplanar groups: which soft edges lie
+// where a facet strip meets a flat surface. Exact on the input doubles: collinearity by Epick's
+// predicates, parallel directions by a cross product in intervals and, where they cannot tell,
+// in rationals.
+class SmoothSurfaces {
+ public:
+  struct Soft {
+    std::uint32_t v0, v1, f, g;
+  };
+
+  SmoothSurfaces(const Mesh& mesh, const std::vector<EdgeUse>& uses) : mesh_(mesh), groups_(coplanar_groups(mesh, uses)) {}
+
+  std::uint32_t group(std::uint32_t f) const { return groups_.group[f]; }
+
+  // Whether faces f and g (of different groups, sharing an edge) lie in one plane.
+  bool coplanar(std::uint32_t f, std::uint32_t g) const {
+    const auto& pv = groups_.plane_vertices[f];
+    const IK::Point_3 a = point(pv[0]), b = point(pv[1]), c = point(pv[2]);
+    for (std::uint32_t v : mesh_.faces[g])
+      if (!CGAL::coplanar(a, b, c, point(v))) return false;
+    return true;
+  }
+
+  // Called for every soft edge before smooth() is asked.
+  void add_soft(const Soft& e) {
+    soft_by_group_[group(e.f)].push_back(soft_.size());
+    soft_by_group_[group(e.g)].push_back(soft_.size());
+    soft_.push_back(e);
+  }
+
+  // Whether soft edge e (as given to add_soft) is a smooth edge.
+  bool smooth(const Soft& e) {
+    if (members_.empty()) gather_members();
+    const std::uint32_t rf = group(e.f), rg = group(e.g);
+    const bool strip_f = strip_across(rf, e), strip_g = strip_across(rg, e);
+    return (strip_f && !strip_g && !lone_triangle(rg)) || (strip_g && !strip_f && !lone_triangle(rf));
+  }
+
+ private:
+  using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
+  IK::Point_3 point(std::uint32_t v) const {
+    const auto& p = mesh_.vertices[v];
+    return IK::Point_3(p[0], p[1], p[2]);
+  }
+
+  // Whether q - p is parallel to b - a (or zero): their cross product vanishes.
+  bool parallel(std::uint32_t a, std::uint32_t b, std::uint32_t p, std::uint32_t q) const {
+    auto cross_zero = [&](auto zero) -> CGAL::Uncertain<bool> {
+      using NT = decltype(zero);
+      auto d = [&](std::uint32_t u, std::uint32_t w, int axis) -> NT {
+        return NT(mesh_.vertices[w][axis]) - NT(mesh_.vertices[u][axis]);
+      };
+      const NT ux = d(a, b, 0), uy = d(a, b, 1), uz = d(a, b, 2), wx = d(p, q, 0), wy = d(p, q, 1), wz = d(p, q, 2);
+      return CGAL::is_zero(uy * wz - uz * wy) & CGAL::is_zero(uz * wx - ux * wz) & CGAL::is_zero(ux * wy - uy * wx);
+    };
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const CGAL::Uncertain<bool> approx = cross_zero(CGAL::Interval_nt<false>(0));
+      if (CGAL::is_certain(approx)) return CGAL::get_certain(approx);
+    }
+    return CGAL::get_certain(cross_zero(CGAL::Exact_rational(0)));
+  }
+
+  bool collinear(std::uint32_t a, std::uint32_t b, std::uint32_t p) const {
+    return p == a || p == b || CGAL::collinear(point(a), point(b), point(p));
+  }
+
+  // The corners of each group that has soft edges, each once.
+  void gather_members() {
+    for (const auto& [root, edges] : soft_by_group_) members_[root];
+    for (std::uint32_t f = 0; f < mesh_.faces.size(); ++f) {
+      const auto it = members_.find(group(f));
+      if (it == members_.end()) continue;
+      ++face_counts_[group(f)];
+      for (std::uint32_t v : mesh_.faces[f]) it->second.push_back(v);
+    }
+    for (auto& [root, corners] : members_) {
+      std::sort(corners.begin(), corners.end());
+      corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    }
+  }
+
+  bool lone_triangle(std::uint32_t root) const {
+    return face_counts_.at(root) == 1 && mesh_.faces[root].size() == 3;
+  }
+
+  // Whether group `root` is a facet strip across the line of soft edge e: every corner on that
+  // line L or on one parallel line L', and a soft edge of the group on L'.
+  bool strip_across(std::uint32_t root, const Soft& e) const {
+    const std::uint32_t a = e.v0, b = e.v1;
+    std::optional<std::uint32_t> other;  // a corner on L', off L
+    for (std::uint32_t v : members_.at(root)) {
+      if (collinear(a, b, v)) continue;
+      if (!other) other = v;
+      else if (!parallel(a, b, *other, v)) return false;
+    }
+    if (!other) return false;
+    const std::uint32_t p = *other;
+    auto on_far_line = [&](std::uint32_t v) { return v == p || (!collinear(a, b, v) && parallel(a, b, p, v)); };
+    for (std::size_t k : soft_by_group_.at(root)) {
+      const Soft& s = soft_[k];
+      if (on_far_line(s.v0) && on_far_line(s.v1)) return true;
+    }
+    return false;
+  }
+
+  const Mesh& mesh_;
+  CoplanarGroups groups_;
+  std::vector<Soft> soft_;
+  std::unordered_map<std::uint32_t, std::vector<std::size_t>> soft_by_group_;  // group -> soft edges
+  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> members_;      // group -> corners
+  std::unordered_map<std::uint32_t, std::size_t> face_counts_;                 // group -> faces
+};
+
 }  // namespace
 
 const char* feature_kind_name(FeatureKind kind) {
@@ -119,6 +238,7 @@ const char* feature_kind_name(FeatureKind kind) {
     case FeatureKind::boundary: return "boundary";
     case FeatureKind::intersection: return "intersection";
     case FeatureKind::group: return "group";
+    case FeatureKind::smooth: return "smooth";
   }
   return "?";
 }
@@ -126,9 +246,31 @@ const char* feature_kind_name(FeatureKind kind) {
 std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const FeatureOptions& options) {
   const double cos_threshold = std::cos(options.crease_degrees * std::numbers::pi / 180.0);
   FaceNormals normals(mesh, view);
+  // How a smooth edge is drawn, if at all.
+  const std::optional<FeatureKind> smooth_kind =
+      options.smooth_edges == SmoothEdges::off    ? std::nullopt
+      : options.smooth_edges == SmoothEdges::thin ? std::optional(FeatureKind::smooth)
+                                                  : std::optional(FeatureKind::crease);
 
   const std::vector<EdgeUse> uses = edge_uses(mesh);
   const ComponentSides sides = component_sides(mesh, uses);
+  // Meshes' smooth edges need every soft edge known first (a strip is known by its soft edges).
+  std::optional<SmoothSurfaces> surfaces;
+  auto soft_edge = [&](EdgeUses first) -> std::optional<SmoothSurfaces::Soft> {
+    const std::uint32_t f = first[0].face, g = first[1].face;
+    if ((first[0].fan && first[1].fan) || surfaces->group(f) == surfaces->group(g)) return std::nullopt;
+    const int flip = first[0].forward == first[1].forward ? -1 : 1;
+    if (normals.crease(f, g, flip, cos_threshold) || surfaces->coplanar(f, g)) return std::nullopt;
+    return SmoothSurfaces::Soft{edge_low(first->key), edge_high(first->key), f, g};
+  };
+  if (smooth_kind && mesh.source_edges.empty()) {
+    surfaces.emplace(mesh, uses);
+    for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
+      if (last - first != 2) return;
+      if (const auto soft = soft_edge(first)) surfaces->add_soft(*soft);
+    });
+  }
+
   std::vector<FeatureEdge> out;
   for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
     FeatureEdge edge;
@@ -155,12 +297,21 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
       } else if (!mesh.source_edges.empty()) {
         // Features from the B-rep: its edges, not the crease rule (features.hpp).
         const std::uint8_t source = first[0].source | first[1].source;
-        if (!(source & 1u) || ((source & 2u) && !options.smooth_edges)) return;
-        edge.kind = FeatureKind::crease;
+        if (!(source & 1u)) return;
+        if (source & 2u) {
+          if (!smooth_kind) return;
+          edge.kind = *smooth_kind;
+        } else {
+          edge.kind = FeatureKind::crease;
+        }
       } else if (normals.crease(f, g, flip, cos_threshold)) {
         edge.kind = FeatureKind::crease;
       } else if (!mesh.face_group.empty() && mesh.face_group[f] != mesh.face_group[g]) {
         edge.kind = FeatureKind::group;
+      } else if (surfaces) {
+        const auto soft = soft_edge(first);
+        if (!soft || !surfaces->smooth(*soft)) return;
+        edge.kind = *smooth_kind;
       } else {
         return;
       }

@@ -1,7 +1,8 @@
 // component_sides (hlr/kernel/mesh_edges.hpp): components, closedness and the exact sign of the
-// enclosed volume.
+// enclosed volume; coplanar_groups.
 #include <hlr/kernel/mesh_edges.hpp>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
 
@@ -68,6 +69,45 @@ ComponentSides component_sides(const Mesh& mesh, const std::vector<EdgeUse>& use
   }
   out.outward.resize(nf);
   for (std::uint32_t f = 0; f < nf; ++f) out.outward[f] = sign[out.component[f]];
+  return out;
+}
+
+CoplanarGroups coplanar_groups(const Mesh& mesh, const std::vector<EdgeUse>& uses) {
+  // Predicates only, on input doubles: exact with Epick, and without Epeck's lazy nodes.
+  using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const std::size_t nf = mesh.faces.size();
+  auto point = [&](std::uint32_t v) {
+    const auto& p = mesh.vertices[v];
+    return IK::Point_3(p[0], p[1], p[2]);
+  };
+  CoplanarGroups out;
+  out.plane_vertices.resize(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const auto& face = mesh.faces[f];
+    out.plane_vertices[f] = {face[0], face[1], face[2]};
+    for (std::size_t k = 2; k < face.size(); ++k) {
+      if (!CGAL::collinear(point(face[0]), point(face[1]), point(face[k]))) {
+        out.plane_vertices[f] = {face[0], face[1], face[k]};
+        break;
+      }
+    }
+  }
+  UnionFind groups(nf);
+  auto in_plane = [&](std::uint32_t f, std::uint32_t g) {
+    const auto& pv = out.plane_vertices[f];
+    const IK::Point_3 a = point(pv[0]), b = point(pv[1]), c = point(pv[2]);
+    for (std::uint32_t v : mesh.faces[g])
+      if (v != pv[0] && v != pv[1] && v != pv[2] && !CGAL::coplanar(a, b, c, point(v))) return false;
+    return true;
+  };
+  for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
+    if (last - first != 2) return;
+    const EdgeUse& u = first[0];
+    const EdgeUse& w = first[1];
+    if (u.forward != w.forward && u.face != w.face && in_plane(u.face, w.face)) groups.join(u.face, w.face);
+  });
+  out.group.resize(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) out.group[f] = groups.find(f);
   return out;
 }
 

@@ -399,7 +399,7 @@ PYBIND11_MODULE(_hlrdraw, m) {
 
   py::list kinds;
   for (auto k : {hlr::FeatureKind::silhouette, hlr::FeatureKind::crease, hlr::FeatureKind::boundary,
-                 hlr::FeatureKind::intersection, hlr::FeatureKind::group}) {
+                 hlr::FeatureKind::intersection, hlr::FeatureKind::group, hlr::FeatureKind::smooth}) {
     if (py::ssize_t(k) != py::len(kinds)) throw std::logic_error("FeatureKind codes are not 0, 1, 2, ...");
     kinds.append(hlr::feature_kind_name(k));
   }

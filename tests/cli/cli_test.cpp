@@ -1147,6 +1147,104 @@ TEST_F(CliDraw, PdfSheetAndAScaleThatDoesNotFit) {
     expect_failure({mesh, bad[0], bad[1], "-o", out("f.svg").string()}, 2, "hlr: ");
 }
 
+// --smooth-edges off|thin|full on the filleted bracket (fixtures/parts/): thin draws the fillets'
+// four tangent lines as kind smooth, the visible ones in a thin group and on a layer THIN, the
+// hidden ones nowhere on the sheet; full draws them as creases; bare --smooth-edges is full.
+TEST_F(CliDraw, SmoothEdgesThinAndFull) {
+  const std::string mesh = (kBundledParts / "filleted_bracket.off").string();
+  auto lines_of = [&](const std::vector<std::string>& options) {
+    std::vector<std::string> args{"draw", mesh, "--view", "iso", "-o", out("f.json").string(), "-o", out("f.svg").string(),
+                                  "-o", out("f.dxf").string()};
+    args.insert(args.end(), options.begin(), options.end());
+    Outcome run = hlr(args);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return json::parse(slurp(out("f.json")));
+  };
+  auto count = [](const json& doc, const std::string& kind, bool visible) {
+    std::size_t n = 0;
+    for (const auto& l : doc.at("lines")) n += l.at("kind") == kind && l.at("visible") == visible;
+    return n;
+  };
+  const json off = lines_of({});
+  EXPECT_EQ(off.at("stats").at("lines_by_kind").at("smooth"), 0);
+  EXPECT_EQ(slurp(out("f.svg")).find("thin"), std::string::npos);
+  EXPECT_EQ(slurp(out("f.dxf")).find("THIN"), std::string::npos);
+  const std::string off_svg = slurp(out("f.svg"));
+
+  const json thin = lines_of({"--smooth-edges", "thin"});
+  EXPECT_EQ(thin.at("stats").at("lines_by_kind").at("smooth"), 4);
+  EXPECT_EQ(thin.at("stats").at("lines"), off.at("stats").at("lines").get<int>() + 4);
+  // In the iso view the inner fillet (facing +x, +z) is seen, the outer one (under the part) not.
+  EXPECT_EQ(count(thin, "smooth", true), 2u);
+  EXPECT_EQ(count(thin, "smooth", false), 2u);
+  const auto svg = hlr::test::parse_svg(slurp(out("f.svg")));
+  ASSERT_TRUE(svg.well_formed) << svg.error;
+  const auto* group = svg.find("g", "thin");
+  ASSERT_TRUE(group);
+  EXPECT_EQ(group->attributes.at("class"), "thin");
+  EXPECT_EQ(group->attributes.at("stroke-width"), "0.25");  // narrow, line group 0.5
+  EXPECT_EQ(group->attributes.count("stroke-dasharray"), 0u);
+  EXPECT_EQ(svg.in_group("path", "thin").size(), 2u);  // the two visible tangent lines
+  EXPECT_TRUE(svg.find("g", "part-filleted_bracket-thin"));
+  // The hidden group is the same as without smooth edges: the hidden tangent lines are not drawn.
+  auto hidden_paths = [](const hlr::test::SvgDocument& doc) {
+    std::vector<std::string> d;
+    for (const auto* p : doc.in_group("path", "hidden")) d.push_back(p->attributes.at("d"));
+    return d;
+  };
+  EXPECT_EQ(hidden_paths(svg), hidden_paths(hlr::test::parse_svg(off_svg)));
+  const std::string dxf = slurp(out("f.dxf"));
+  EXPECT_NE(dxf.find("\nTHIN\n"), std::string::npos);
+
+  const json full = lines_of({"--smooth-edges", "full"});
+  EXPECT_EQ(full.at("stats").at("lines_by_kind").at("smooth"), 0);
+  EXPECT_EQ(full.at("stats").at("lines_by_kind").at("crease"), off.at("stats").at("lines_by_kind").at("crease").get<int>() + 4);
+  const json bare = lines_of({"--smooth-edges"});
+  EXPECT_EQ(bare.at("lines"), full.at("lines"));
+  EXPECT_EQ(lines_of({"--smooth-edges", "off"}).at("lines"), off.at("lines"));
+  // A bare --smooth-edges before the meshes takes the mesh for its value (README: meshes first),
+  // and says so; a bare one before another option is full.
+  Outcome run = hlr({"draw", mesh, "--smooth-edges", "--view", "iso", "-o", out("g.json").string()});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(json::parse(slurp(out("g.json"))).at("lines"), full.at("lines"));
+  fs::remove(out("g.json"));
+  run = hlr({"draw", "--smooth-edges", mesh, "--view", "iso", "-o", out("g.json").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("put meshes before a bare --smooth-edges"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out("g.json")));
+}
+
+TEST_F(CliDraw, SmoothEdgesBadModeIsAUsageError) {
+  const std::string mesh = (kBundledParts / "filleted_bracket.off").string();
+  expect_failure({mesh, "--smooth-edges", "dotted", "-o", out("f.svg").string()}, 2,
+                 "hlr: --smooth-edges: 'dotted' is not off, thin or full");
+  // A second mesh after a bare --smooth-edges is taken for its value, and refused by name.
+  expect_failure({mesh, "--smooth-edges", mesh, "-o", out("f.svg").string()}, 2,
+                 "hlr: --smooth-edges: '" + mesh + "' is not off, thin or full");
+  expect_failed_run({"sheet", mesh, "--smooth-edges", "thick", "-o", out("s.svg").string()}, 2,
+                    "hlr: --smooth-edges: 'thick' is not off, thin or full");
+}
+
+// hlr sheet --smooth-edges thin: each view's visible smooth lines in its thin group, the DXF's
+// layer THIN.
+TEST_F(CliDraw, SmoothEdgesOnASheet) {
+  const std::string mesh = (kBundledParts / "filleted_bracket.off").string();
+  Outcome run = hlr({"sheet", mesh, "--smooth-edges", "thin", "-o", out("s.svg").string(), "-o", out("s.pdf").string(), "-o",
+                     out("s.dxf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto svg = hlr::test::parse_svg(slurp(out("s.svg")));
+  ASSERT_TRUE(svg.well_formed) << svg.error;
+  // The front view sees the tangent lines end-on. The top view sees the inner fillet's two lines,
+  // but the one at the wall (x = 8) lies under the wall's top edge, a visible line, which takes
+  // precedence; in the right view the one on the base (z = 8) lies under the base's end edge.
+  EXPECT_FALSE(svg.find("g", "view-front-thin"));
+  EXPECT_EQ(svg.in_group("path", "view-top-thin").size(), 1u);
+  EXPECT_EQ(svg.in_group("path", "view-right-thin").size(), 1u);
+  EXPECT_EQ(svg.in_group("path", "view-iso-thin").size(), 2u);
+  EXPECT_NE(slurp(out("s.dxf")).find("\nTHIN\n"), std::string::npos);
+  EXPECT_EQ(slurp(out("s.pdf")).rfind("%PDF-", 0), 0u);
+}
+
 class CliSheet : public CliDraw {
  protected:
   void expect_sheet_failure(const std::vector<std::string>& args, int code, const std::string& prefix) const {

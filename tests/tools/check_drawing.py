@@ -83,6 +83,7 @@ def check_dxf(path):
         require(all(e.dxf.solid_fill == 1 for e in on_shadow), "a HATCH on layer SHADOW is not solid")
         shadows = len(on_shadow)
         wanted |= {"SHADOW"}
+    wanted |= thin_layers(doc, [visible[: -len("VISIBLE")] + "THIN" for visible, _ in pairs])
     # ezdxf adds "Defpoints" as it loads a file
     extra = {layer.dxf.name for layer in doc.layers if layer.dxf.name.lower() != "defpoints"} - wanted - {"0"}
     require(not extra, f"unexpected layers {sorted(extra)}")
@@ -121,10 +122,26 @@ def centre_pattern(doc):
     return pattern
 
 
+def thin_layers(doc, names):
+    """--smooth-edges thin: layers of smooth lines, continuous and narrower than VISIBLE, when defined."""
+    found = set()
+    for name in names:
+        if not doc.layers.has_entry(name):
+            continue
+        layer = doc.layers.get(name)
+        require(layer.dxf.linetype.upper() == "CONTINUOUS", f"layer {name} is not continuous")
+        visible = name[: -len("THIN")] + "VISIBLE"
+        if doc.layers.has_entry(visible):
+            require(0 < layer.dxf.lineweight < doc.layers.get(visible).dxf.lineweight, f"layer {name} is not narrow")
+        found.add(name)
+    return found
+
+
 def check_dxf_sheet(path, doc, blocks, auditor, audit):
     wanted = {"VISIBLE", "HIDDEN", "CENTER", "BORDER"}
     for name in sorted(wanted):
         require(doc.layers.has_entry(name), f"layer {name} missing")
+    wanted |= thin_layers(doc, ["THIN"])
     extra = {layer.dxf.name for layer in doc.layers if layer.dxf.name.lower() != "defpoints"} - wanted - {"0"}
     require(not extra, f"unexpected layers {sorted(extra)}")
     dashed_pattern(doc, "HIDDEN")
@@ -138,7 +155,7 @@ def check_dxf_sheet(path, doc, blocks, auditor, audit):
     for name in blocks:
         block = doc.blocks.get(name)
         layers = {e.dxf.layer for e in block}
-        require(layers <= {"VISIBLE", "HIDDEN", "CENTER"}, f"block {name} has entities on {sorted(layers)}")
+        require(layers <= {"VISIBLE", "HIDDEN", "CENTER", "THIN"} & wanted, f"block {name} has entities on {sorted(layers)}")
         circles += len(block.query("CIRCLE"))
         arcs += len(block.query("ARC"))
     fixes = len(auditor.fixes) + len(audit.fixes)
@@ -281,7 +298,7 @@ def is_vector(x, n):
     return isinstance(x, list) and len(x) == n and all(is_number(v) for v in x)
 
 
-KINDS = {"silhouette", "crease", "boundary", "intersection", "group"}
+KINDS = {"silhouette", "crease", "boundary", "intersection", "group", "smooth"}  # smooth: --smooth-edges thin
 
 
 def check_json(path):

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Golden-file test of `hlr draw`: the bundled cube and L-bracket drawn to JSON, SVG and DXF must
-match tests/golden/ byte for byte (JSON: with the timings left out and the input paths cut to
+"""Golden-file test of `hlr draw`: the bundled cube and L-bracket, and the filleted bracket with
+--smooth-edges thin (fixtures/parts/), drawn to JSON, SVG and DXF must match tests/golden/ byte for byte (JSON: with the timings left out and the input paths cut to
 their file names, which differ from run to run and clone to clone).
 
 usage: golden_drawings.py HLR FIXTURES_DIR GOLDEN_DIR WORK_DIR [--update]
@@ -16,11 +16,14 @@ import shutil
 import subprocess
 import sys
 
-CASES = [  # (mesh, view): front views put hidden edges exactly under visible ones (precedence)
-    ("cube.off", "front"),
-    ("cube.off", "iso"),
-    ("l_bracket.off", "front"),
-    ("l_bracket.off", "iso"),
+CASES = [  # (mesh, view, options, suffix): front views put hidden edges exactly under visible ones (precedence)
+    ("cube.off", "front", [], ""),
+    ("cube.off", "iso", [], ""),
+    ("l_bracket.off", "front", [], ""),
+    ("l_bracket.off", "iso", [], ""),
+    # Smooth edges as thin lines: the inner fillet's tangent lines visible, the outer one's hidden
+    # (left off the sheet); the SVG's thin group, the DXF's layer THIN.
+    ("../parts/filleted_bracket.off", "iso", ["--smooth-edges", "thin"], "_thin"),
 ]
 
 
@@ -52,10 +55,10 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     failures = 0
-    for mesh, view in CASES:
-        stem = f"{os.path.splitext(mesh)[0]}_{view}"
+    for mesh, view, options, suffix in CASES:
+        stem = f"{os.path.splitext(os.path.basename(mesh))[0]}_{view}{suffix}"
         outputs = [os.path.join(work, f"{stem}.{ext}") for ext in ("json", "svg", "dxf")]
-        cmd = [hlr, "draw", os.path.join(fixtures, mesh), "--view", view]
+        cmd = [hlr, "draw", os.path.normpath(os.path.join(fixtures, mesh)), "--view", view] + options
         for o in outputs:
             cmd += ["-o", o]
         run = subprocess.run(cmd, capture_output=True, text=True)

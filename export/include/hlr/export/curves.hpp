@@ -32,6 +32,7 @@ struct DrawingPolyline {
   bool closed = false;
   bool visible = true;
   std::uint32_t mesh = 0;
+  bool thin = false;  // visible, drawn thin (DrawingSegment::thin); likewise in the curves below
 };
 
 // One step of a path, from the point before it to `to`: a straight line, or an arc of the
@@ -52,6 +53,7 @@ struct DrawingPath {
   bool closed = false;  // a last line back to `start`
   bool visible = true;
   std::uint32_t mesh = 0;
+  bool thin = false;
 };
 
 struct DrawingCircle {
@@ -59,6 +61,7 @@ struct DrawingCircle {
   double radius = 0;
   bool visible = true;
   std::uint32_t mesh = 0;
+  bool thin = false;
 };
 
 // An arc of an ellipse (a source circle seen at a slant, source_curves.hpp), as DXF's ELLIPSE
@@ -71,6 +74,7 @@ struct DrawingEllipse {
   bool closed = false;
   bool visible = true;
   std::uint32_t mesh = 0;
+  bool thin = false;
 };
 
 // The point of `e` at parameter t.
@@ -85,6 +89,9 @@ struct DrawingCurves {
     std::size_t circles = 0, arcs = 0;
   } from_source;  // of `circles` and `arcs`, those of source curves (the rest recovered)
 };
+
+// Whether any path, circle or ellipse of `curves` is thin (a smooth line's visible piece).
+bool has_thin_lines(const DrawingCurves& curves);
 
 // The chains as paths, circles and arcs where the rule above finds them (tolerance in the
 // chains' units; 0 or less: none, every chain a path of lines).

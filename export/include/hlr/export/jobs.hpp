@@ -30,7 +30,7 @@ struct DrawOptions {
   KernelKind kernel = KernelKind::exact;
   double crease = 30;          // degrees: an edge is a crease when its faces meet at more than this
   bool intersections = true;   // lines where faces penetrate
-  bool smooth_edges = false;   // tangent B-rep edges of CAD models drawn too (FeatureOptions)
+  SmoothEdges smooth_edges = SmoothEdges::off;  // smooth (tangent) edges: FeatureOptions
   // Leave the exact solution (polygons, visibility map, lines, drawing segments) and the scene's
   // own intersections to the process's exit instead of freeing them, once the drawing is rounded
   // or when the run is stopped: for a program that writes its outputs and exits. Freeing millions

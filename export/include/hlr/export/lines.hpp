@@ -62,7 +62,11 @@ struct DrawingSegment {
   double meeting_degrees = 90;  // intersection lines: the angle at which their surfaces meet
   std::uint32_t line = 0;       // index of its line in the LineSet
   std::int32_t curve = -1;      // the LineDrawing::source_curves it lies on, or -1
+  bool thin = false;            // a visible piece of a smooth line: thin continuous (ISO 128 01.1)
 };
+// The ISO 128-20 precedence of a segment's class: 0 visible (continuous wide), 1 hidden (dashed
+// narrow), 2 thin (continuous narrow: smooth lines). Where lines coincide, the lower one is drawn.
+inline int precedence_rank(const DrawingSegment& s) { return s.thin ? 2 : s.visible ? 0 : 1; }
 
 // A source circle (Mesh::source_curves: a CAD model's circular B-rep edge) as an orthographic
 // view sees it, in view coordinates: its centre, and the ellipse it projects to, with major
@@ -197,7 +201,7 @@ std::string drawing_scale_label(const LineDrawing& drawing, double ratio);
 double drawing_scale(const LineDrawing& drawing, const DrawingStyle& style);
 
 // Near-coincident segments drawn once, after ISO 128 precedence. Visible segments are taken first,
-// then hidden ones, each class in input order; a segment loses every part that runs along an
+// then hidden ones, then thin ones (precedence_rank), each class in input order; a segment loses every part that runs along an
 // already kept segment within `distance` (model units): whole duplicates are dropped, collinear
 // overlaps trimmed, and leftovers shorter than `distance` dropped; an overlap shorter than
 // `distance` is left alone (segments meeting end to end). "Along" means nearly parallel

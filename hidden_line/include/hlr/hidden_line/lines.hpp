@@ -14,7 +14,10 @@
 //
 // drawing_segments applies ISO 128 precedence for drawings: where pieces coincide in the image,
 // the visible one is drawn and a hidden one is not; coincident pieces of one class are drawn once,
-// for the mesh whose line comes first.
+// for the mesh whose line comes first. Smooth lines (FeatureKind::smooth) are thin continuous
+// lines (ISO 128 type 01.1): their visible pieces come last in precedence, after hidden ones (a
+// narrow continuous line gives way to a hidden edge), and their hidden pieces are not drawn
+// (drafters leave hidden tangent edges out).
 #pragma once
 
 #include <hlr/hidden_line/visibility.hpp>
@@ -65,7 +68,7 @@ struct FeatureLine {
 
 struct LineStats {
   std::size_t lines = 0;                 // feature edges plus intersection segments
-  std::size_t by_kind[5] = {};           // indexed by FeatureKind
+  std::size_t by_kind[kFeatureKinds] = {};  // indexed by FeatureKind
   std::size_t point_in_view = 0;         // lines seen end-on (no pieces)
   std::size_t visible_pieces = 0, hidden_pieces = 0;
 };
@@ -102,6 +105,7 @@ struct DrawnSegment {
   std::uint32_t mesh = 0;
   double meeting_degrees = 90;  // of its line
   std::uint32_t line = 0;       // its line's index in the LineSet
+  bool thin = false;            // a visible piece of a smooth line: thin continuous
 };
 
 template <class K>

@@ -6,6 +6,7 @@
 #include <hlr/kernel/scene.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <numeric>
 #include <vector>
@@ -86,5 +87,15 @@ struct ComponentSides {
   std::size_t closed = 0, open = 0, inward = 0;  // component counts
 };
 ComponentSides component_sides(const Mesh& mesh, const std::vector<EdgeUse>& uses);
+
+// Coplanar groups, facts of the model decided exactly on the input doubles (Epick's predicates):
+// faces joined across an edge of exactly two faces that run it in opposite directions, with every
+// corner of one in the plane of the other. The surfaces the area sort consolidates (hidden_line)
+// and the planar surfaces of the smooth-edge rule (features.hpp).
+struct CoplanarGroups {
+  std::vector<std::array<std::uint32_t, 3>> plane_vertices;  // per face: three non-collinear corners
+  std::vector<std::uint32_t> group;                          // per face: the lowest face of its group
+};
+CoplanarGroups coplanar_groups(const Mesh& mesh, const std::vector<EdgeUse>& uses);
 
 }  // namespace hlr

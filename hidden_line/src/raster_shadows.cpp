@@ -4,6 +4,8 @@
 
 #include "depth_buffer.hpp"
 
+#include <hlr/kernel/mesh_edges.hpp>
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -34,7 +36,9 @@ struct FaceSamples {
 class ShadowSampler {
  public:
   ShadowSampler(const std::vector<Mesh>& meshes, const Light& light, const detail::DepthBuffer& map, int resolution)
-      : meshes_(meshes), light_(light), map_(map), resolution_(resolution) {}
+      : meshes_(meshes), light_(light), map_(map), resolution_(resolution) {
+    for (const Mesh& mesh : meshes) sides_.push_back(component_sides(mesh, edge_uses(mesh)));
+  }
 
   FaceSamples face(std::uint32_t m, std::uint32_t f) const {
     const Mesh& mesh = meshes_[m];
@@ -49,6 +53,7 @@ class ShadowSampler {
       for (int i = 0; i < 3; ++i) mean[i] += p[i] / double(corners.size());
     }
     if (!(dot(n, n) > 0)) return {};  // degenerate: no area to light
+    if (sides_[m].outward[f] < 0) n = {-n[0], -n[1], -n[2]};  // a closed component wound inward
     const Vec3& lv = light_.vector;
     const double facing = light_.kind == Light::directional
                               ? -dot(n, lv)
@@ -135,6 +140,9 @@ class ShadowSampler {
   const Light& light_;
   const detail::DepthBuffer& map_;
   int resolution_;
+  // The front side as the exact path takes it (shadows.hpp): a closed component wound inward
+  // faces outward.
+  std::vector<ComponentSides> sides_;
 };
 
 }  // namespace

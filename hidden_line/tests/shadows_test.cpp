@@ -286,6 +286,14 @@ TEST(RasterShadowMap, ConvergesToTheExactLitAreas) {
     }
 }
 
+// A closed box wound inward: its front side is the outside, for the map as for cast_shadows.
+TEST(RasterShadowMap, TakesTheFrontSideAsTheExactPathDoes) {
+  const auto meshes = load(std::string(HLR_SCENE_FIXTURES_DIR) + "/inward_box.off");
+  const Light light = sun(1, 2, -4);
+  const ShadowResult exact = cast_shadows(meshes, {light});
+  EXPECT_LT(raster_error(meshes, exact, hidden_line::raster_shadows(meshes, light, 256)), 1e-9);
+}
+
 TEST(RasterShadowMap, FacesTurnedAwayAreDarkAndUnshadowedFacesLit) {
   const auto meshes = load(fixture("box_on_ground.off"));
   for (int n : {16, 100, 1024}) {

@@ -8,7 +8,8 @@
 //     face, even-odd rule; a face too small for any gets its corners' mean), at the map's pixel
 //     spacing on that face: the pixel size for a sun, the pixel size times the face's least
 //     distance along the light view's axis for a point light;
-//   - a sample is lit when its face's front side faces the light (its Newell normal, in double)
+//   - a sample is lit when its face's front side faces the light (its Newell normal, in double,
+//     turned over in a closed component wound inward, as cast_shadows takes the front side)
 //     and its depth in the light view is no farther than the map's biased depth at its pixel.
 // A face's sunlit fraction is its lit samples over its samples. docs/STABILITY.md says where the
 // map is wrong (grazing light, contact shadows) and by how much.

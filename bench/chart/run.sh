@@ -12,6 +12,11 @@
 #   hlr check MESH --view V --kernels double --json ...                  (exact + double)
 # each in its own process, so that a crash (a signal, or TIMEOUT) is charged to its method only,
 # then Line Art through bench/draw/run.sh (KEEP, STROKES=1) and bench/draw/union_lengths.py.
+# For every mesh, once, the shadow check (the chart's right panel; NO_SHADOWS=1 leaves it out):
+#   hlr check MESH $SHADOW_LIGHTS --raster 64,256,1024,4096 --json ...   (exact + shadow maps)
+# with SHADOW_LIGHTS three suns by default: oblique (1,2,-4), steep from the other side (-2,1,-1)
+# and low, about 8 degrees above the horizon (1,0.3,-0.15). SHADOWS_ONLY=1 runs only those and
+# redraws the line panel from LINES_CSV (an earlier run's CSV) instead.
 # bench/chart/chart.py turns the reports into
 #   bench/chart/results/<UTC date>.csv        one row per mesh, view and method
 #   docs/images/speed_accuracy.svg and .png   the chart
@@ -27,7 +32,8 @@
 #
 # env: VIEWS (front,top,right,iso), SKIP, TIMEOUT (seconds per hlr run, default 600),
 #      REPEAT (Line Art repeats, default 1), NO_PEER=1 (leave Line Art out), HLR, PYTHON,
-#      KEEP=DIR (keep the reports), OUT (the CSV).
+#      KEEP=DIR (keep the reports), OUT (the CSV), NO_SHADOWS, SHADOWS_ONLY, SHADOW_LIGHTS, LINES_CSV,
+#      LINES_LABEL.
 # needs: a built hlr, /usr/bin/python3 with matplotlib (scripts/install-deps.sh), and for the
 # peer point Blender (apt-get install -y blender).
 set -euo pipefail
@@ -50,12 +56,27 @@ mkdir -p "$work/check"
 bench_banner "chart: ${#meshes[@]} meshes"
 
 IFS=',' read -r -a view_list <<<"$views"
+read -r -a shadow_lights <<<"${SHADOW_LIGHTS:---sun 1,2,-4 --sun -2,1,-1 --sun 1,0.3,-0.15}"
+shadows_only="${SHADOWS_ONLY:-0}"
+if [ "$shadows_only" = 1 ] && [ -z "${LINES_CSV:-}" ]; then echo "SHADOWS_ONLY=1 needs LINES_CSV" >&2; exit 2; fi
 peer_meshes=()
 for mesh in "${meshes[@]}"; do
   name="$(basename "$mesh" .off)"
   bench_skip "$name" "$mesh" && continue
   # Fixture names may repeat a shared scene's (anchor): tag them by folder.
   case "$mesh" in fixtures/*) name="fixture_$name" ;; *) peer_meshes+=("$mesh") ;; esac
+  if [ "${NO_SHADOWS:-0}" != 1 ]; then
+    base="$work/check/${name}__lights__shadows"
+    rc=0
+    timeout "$timeout_s" "$hlr" check "$mesh" "${shadow_lights[@]}" --raster 64,256,1024,4096 --json "$base.json" \
+      >"$base.log" 2>&1 || rc=$?
+    echo "$rc" >"$base.rc"
+    [ "$rc" = 0 ] || echo "hlr check shadows on $name: exit $rc (log: $base.log)" >&2
+  fi
+  if [ "$shadows_only" = 1 ]; then
+    echo " $name"
+    continue
+  fi
   for view in "${view_list[@]}"; do
     for method in raster epick double; do
       case "$method" in
@@ -74,7 +95,7 @@ for mesh in "${meshes[@]}"; do
 done
 
 lengths=""
-if [ "${NO_PEER:-0}" != 1 ] && [ "$have_peer" = 1 ] && [ ${#peer_meshes[@]} -gt 0 ]; then
+if [ "$shadows_only" != 1 ] && [ "${NO_PEER:-0}" != 1 ] && [ "$have_peer" = 1 ] && [ ${#peer_meshes[@]} -gt 0 ]; then
   KEEP="$work/draw" STROKES=1 OUT="$work/draw.csv" VIEWS="$views" REPEAT="$repeat" \
     bash "$here/../draw/run.sh" "${peer_meshes[@]}" >"$work/draw.log" 2>&1 || echo "Line Art run failed (log: $work/draw.log)" >&2
   "$py" "$here/../draw/union_lengths.py" "$work/draw" -o "$work/lengths.csv" >"$work/lengths.log" 2>&1 \
@@ -83,5 +104,6 @@ fi
 
 "$py" "$here/chart.py" "$work/check" --out "$out" --images "$root/docs/images/speed_accuracy" \
   ${lengths:+--lineart-lengths "$lengths" --lineart-times "$work/draw.csv"} \
+  ${LINES_CSV:+--lines-csv "$LINES_CSV" --lines-label "${LINES_LABEL:-$(basename "$LINES_CSV" .csv)}"} \
   --label "$(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u +%F)"
 bench_done

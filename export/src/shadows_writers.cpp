@@ -39,7 +39,11 @@ json polygon_json(const ShadowPolygon& p) {
 // A face as the file numbers it.
 std::uint32_t file_face(const Mesh& mesh, std::uint32_t f) { return mesh.face_index.empty() ? f : mesh.face_index[f]; }
 
-json light_json(const hidden_line::Light& light, const LightLabel& label) {
+}  // namespace
+
+namespace detail {
+
+nlohmann::json light_json(const hidden_line::Light& light, const LightLabel& label) {
   json out;
   if (light.kind == hidden_line::Light::directional) {
     out["type"] = "directional";
@@ -57,7 +61,7 @@ json light_json(const hidden_line::Light& light, const LightLabel& label) {
   return out;
 }
 
-}  // namespace
+}  // namespace detail
 
 std::string shadows_json(const ShadowsDocument& doc) {
   const auto& r = doc.result;
@@ -65,7 +69,7 @@ std::string shadows_json(const ShadowsDocument& doc) {
   out["format"] = "hlr-shadows/1";
   out["input"] = detail::input_json(doc.input);
   json lights = json::array();
-  for (std::size_t k = 0; k < doc.lights.size(); ++k) lights.push_back(light_json(doc.lights[k], doc.labels[k]));
+  for (std::size_t k = 0; k < doc.lights.size(); ++k) lights.push_back(detail::light_json(doc.lights[k], doc.labels[k]));
   out["lights"] = std::move(lights);
 
   const bool with_union = !r.face_union_shadow_area.empty();

@@ -663,17 +663,19 @@ std::optional<std::string> point_light_defect(const std::vector<Mesh>& meshes, c
          "supported";
 }
 
+std::optional<View> light_view(const std::vector<Mesh>& meshes, const Light& light) {
+  if (light.kind == Light::directional) return light_view_along(light.vector);
+  return point_light_view(meshes, light);
+}
+
 ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Light>& lights, const ShadowOptions& options) {
   std::vector<View> views;
   for (const Light& light : lights) {
     if (auto defect = light_defect(light)) throw std::invalid_argument(*defect);
-    if (light.kind == Light::directional) {
-      views.push_back(light_view_along(light.vector));
-    } else if (auto view = point_light_view(meshes, light)) {
+    if (auto view = light_view(meshes, light))
       views.push_back(*view);
-    } else {
+    else
       throw std::invalid_argument(*point_light_defect(meshes, light));
-    }
   }
   const auto start = Clock::now();
   ShadowResult result;

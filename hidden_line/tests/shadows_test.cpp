@@ -4,6 +4,7 @@
 #include "shadow_oracle.hpp"
 #include "soup_generator.hpp"
 
+#include <hlr/hidden_line/raster_shadows.hpp>
 #include <hlr/hidden_line/shadows.hpp>
 
 #include <gtest/gtest.h>
@@ -249,6 +250,69 @@ ShadowResult ground_shadow_called_lit(ShadowResult r) {
   sl.lit.push_back(sl.shadow.back().polygon);
   sl.shadow.pop_back();
   return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The raster shadow map (raster_shadows.hpp) against the exact shadows: it converges.
+
+// sum(area |raster fraction - exact fraction|) / sum(area), over the faces with area.
+double raster_error(const std::vector<Mesh>& meshes, const ShadowResult& exact,
+                    const hidden_line::RasterShadows& raster) {
+  double error = 0, area = 0;
+  for (std::uint32_t m = 0; m < meshes.size(); ++m)
+    for (std::uint32_t f = 0; f < meshes[m].faces.size(); ++f) {
+      const double a = exact.face_area[m][f];
+      if (!(a > 0)) continue;
+      error += a * std::abs(raster.sunlit_fraction[m][f] - exact.face_lit_area[0][m][f] / a);
+      area += a;
+    }
+  return error / area;
+}
+
+TEST(RasterShadowMap, ConvergesToTheExactLitAreas) {
+  for (const char* file : {"box_on_ground.off", "overhang.off", "two_boxes.off"})
+    for (const Light& light : {sun(1, 2, -4), sun(-1, 0.5, -1), bulb(1, -4, 4)}) {
+      const auto meshes = load(fixture(file));
+      if (hidden_line::point_light_defect(meshes, light)) continue;
+      SCOPED_TRACE(std::string(file) + (light.kind == Light::point ? " point light" : " sun"));
+      const ShadowResult exact = cast_shadows(meshes, {light});
+      const auto coarse = hidden_line::raster_shadows(meshes, light, 64);
+      const auto fine = hidden_line::raster_shadows(meshes, light, 512);
+      const double e64 = raster_error(meshes, exact, coarse), e512 = raster_error(meshes, exact, fine);
+      // The error lies along shadow edges, one pixel wide: 8 times finer pixels, about 8 times less.
+      EXPECT_LT(e512, e64 / 3) << e64 << " " << e512;
+      EXPECT_LT(e512, 0.004) << e512;
+      EXPECT_GT(fine.total_samples, 30 * coarse.total_samples);  // spacing 1/8: 64 times the samples
+    }
+}
+
+// A closed box wound inward: its front side is the outside, for the map as for cast_shadows.
+TEST(RasterShadowMap, TakesTheFrontSideAsTheExactPathDoes) {
+  const auto meshes = load(std::string(HLR_SCENE_FIXTURES_DIR) + "/inward_box.off");
+  const Light light = sun(1, 2, -4);
+  const ShadowResult exact = cast_shadows(meshes, {light});
+  EXPECT_LT(raster_error(meshes, exact, hidden_line::raster_shadows(meshes, light, 256)), 1e-9);
+}
+
+TEST(RasterShadowMap, FacesTurnedAwayAreDarkAndUnshadowedFacesLit) {
+  const auto meshes = load(fixture("box_on_ground.off"));
+  for (int n : {16, 100, 1024}) {
+    const auto r = hidden_line::raster_shadows(meshes, sun(1, 2, -4), n);
+    const auto& f = r.sunlit_fraction[0];
+    // bottom, +x, +y face away from the sun: no samples, dark
+    for (int face : {1, 4, 5}) {
+      EXPECT_EQ(f[face], 0.0) << n << " face " << face;
+      EXPECT_EQ(r.samples[0][face], 0u);
+    }
+    // top, -y, -x: nothing between them and the sun, and the bias keeps them from shadowing
+    // themselves (no acne)
+    for (int face : {2, 3, 6}) EXPECT_EQ(f[face], 1.0) << n << " face " << face;
+    // the ground: 7 of 400 in shadow, up to the pixels along the shadow's outline
+    EXPECT_NEAR(f[0], 393.0 / 400, 16.0 * 20 / n / 400) << n;
+  }
+  EXPECT_THROW(hidden_line::raster_shadows(meshes, sun(1, 2, -4), 15), std::invalid_argument);
+  EXPECT_THROW(hidden_line::raster_shadows(meshes, sun(0, 0, 0), 64), std::invalid_argument);
+  EXPECT_THROW(hidden_line::raster_shadows(meshes, bulb(1, 1, 1), 64), std::invalid_argument);  // inside the box
 }
 
 TEST(ShadowOracle, FindsPlantedErrors) {

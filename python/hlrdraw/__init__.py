@@ -48,7 +48,7 @@ from ._hlrdraw import Error, Mesh
 Error.__module__ = "hlrdraw"
 Mesh.__module__ = "hlrdraw"
 
-__all__ = ["Error", "Mesh", "Drawing", "read_mesh", "mesh", "draw", "draw_file", "surfaces", "clip",
+__all__ = ["Error", "Mesh", "Drawing", "read_mesh", "mesh", "draw", "draw_file", "surfaces", "shadows", "clip",
            "write_svg", "write_pdf", "write_dxf", "write_json", "KIND_NAMES"]
 
 # The hlr-lines/1 names of the kinds of line, in the order of their codes.
@@ -100,6 +100,18 @@ def _vector(value):
     if value is None:
         return None
     return [float(c) for c in _np.asarray(value, dtype=float).reshape(-1)]
+
+
+def _lights(value):
+    """sun= or point_light=: None, one (x, y, z) or a sequence of them, as lists of floats."""
+    if value is None:
+        return []
+    array = _np.asarray(value, dtype=float)
+    if array.ndim == 1:
+        array = array.reshape(1, -1)
+    if array.ndim != 2:
+        raise Error("lights: give (x, y, z) or a list of them")
+    return [[float(c) for c in row] for row in array]
 
 
 class Drawing:
@@ -190,18 +202,21 @@ _STYLE_DEFAULTS = {"sheet": "A4", "scale": None, "units": "mm", "line_group": 0.
 
 
 def draw(vertices, faces=None, *, view="iso", direction=None, up=None, crease=30, intersections=True,
-         kernel="exact", threads=0, progress=None):
+         sun=None, point_light=None, kernel="exact", threads=0, progress=None):
     """The line drawing of a scene in a view, as `hlr draw` makes it: a Drawing.
 
     draw(vertices, faces, ...) draws one mesh; draw(meshes, ...) a scene of several (see the
     module's help for what a mesh may be). crease: an edge is a crease line when its faces meet at
     more than this many degrees (--crease); intersections=False leaves out the lines where faces
-    penetrate (--no-intersections). threads: at most this many threads (--threads; 0: every core;
+    penetrate (--no-intersections). sun=(dx, dy, dz) (the direction its rays travel) and
+    point_light=(x, y, z), each one light or a list of them, draw their shadows as surface detail
+    (--sun, --point-light; the exact kernel only). threads: at most this many threads (--threads; 0: every core;
     the limit is the process's while the job runs). progress: a callable given each stage's
     description (the lines `hlr draw` prints for large scenes).
     """
     native = _hlrdraw.draw(_meshes(vertices, faces), str(view), _vector(direction), _vector(up), str(kernel),
-                           float(crease), bool(intersections), int(threads), progress)
+                           float(crease), bool(intersections), _lights(sun), _lights(point_light), int(threads),
+                           progress)
     return Drawing(native)
 
 
@@ -220,6 +235,18 @@ def surfaces(vertices, faces=None, *, view="iso", direction=None, up=None, kerne
     draw."""
     text = _hlrdraw.surfaces(_meshes(vertices, faces), str(view), _vector(direction), _vector(up), str(kernel),
                              bool(exact), bool(keep_back_faces), bool(consolidation), int(threads), progress)
+    return _json.loads(text)
+
+
+def shadows(vertices, faces=None, *, sun=None, point_light=None, union=False, threads=0, progress=None):
+    """Which part of every face each light reaches, exactly, as `hlr shadows -o OUT.json` finds it:
+    the hlr-shadows/1 document as a dict (docs/FORMATS.md). sun=(dx, dy, dz) is a directional light
+    whose rays travel along that direction (--sun), point_light=(x, y, z) a point light outside the
+    scene (--point-light); each may be one light or a list of them, suns first in "lights". At
+    least one light is needed. union=True adds every face's shadow over all lights (--union);
+    threads and progress as in draw."""
+    text = _hlrdraw.shadows(_meshes(vertices, faces), _lights(sun), _lights(point_light), bool(union), int(threads),
+                            progress)
     return _json.loads(text)
 
 

@@ -13,6 +13,8 @@
 
 #include <hlr/export/jobs.hpp>
 #include <hlr/export/polygons.hpp>
+#include <hlr/export/shadows.hpp>
+#include <hlr/hidden_line/shadows.hpp>
 #include <hlr/kernel/errors.hpp>
 #include <hlr/kernel/features.hpp>
 #include <hlr/kernel/scene.hpp>
@@ -23,6 +25,7 @@
 #include <tbb/global_control.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <charconv>
 #include <cmath>
@@ -64,6 +67,37 @@ KernelKind kernel_kind(const std::string& name) {
 Vec3 vector3(const std::vector<double>& v, const char* what) {
   if (v.size() != 3) bad_option(what, "expected 3 numbers (x, y, z), got " + std::to_string(v.size()));
   return {v[0], v[1], v[2]};
+}
+
+// Lights as `--sun DX,DY,DZ` and `--point-light X,Y,Z` take them (app/src/light_options.cpp): suns
+// first, then point lights; a defect is an error naming the argument and the light. Point lights
+// are checked against the scene once it is read (checked_point_lights).
+std::vector<hidden_line::Light> resolve_lights(const std::vector<std::vector<double>>& suns,
+                                               const std::vector<std::vector<double>>& point_lights) {
+  std::vector<hidden_line::Light> out;
+  auto add = [&](const std::vector<double>& v, hidden_line::Light::Kind kind, const char* what) {
+    const hidden_line::Light light{kind, vector3(v, what)};
+    if (auto defect = hidden_line::light_defect(light))
+      bad_option(std::string(what) + " (" + exporter::number_text(v[0]) + ", " + exporter::number_text(v[1]) + ", " +
+                     exporter::number_text(v[2]) + ")",
+                 *defect);
+    out.push_back(light);
+  };
+  for (const auto& v : suns) add(v, hidden_line::Light::directional, "sun");
+  for (const auto& v : point_lights) add(v, hidden_line::Light::point, "point_light");
+  return out;
+}
+
+void check_point_lights(const std::vector<Mesh>& meshes, const std::vector<hidden_line::Light>& lights) {
+  for (const auto& light : lights) {
+    if (light.kind != hidden_line::Light::point) continue;
+    if (auto defect = hidden_line::point_light_defect(meshes, light)) {
+      const Vec3& v = light.vector;
+      bad_option("point_light (" + exporter::number_text(v[0]) + ", " + exporter::number_text(v[1]) + ", " +
+                     exporter::number_text(v[2]) + ")",
+                 *defect);
+    }
+  }
 }
 
 // The view as `hlr draw --view NAME | --dir X,Y,Z [--up X,Y,Z]` resolves it (app/src/scene_options.cpp).
@@ -326,19 +360,51 @@ std::shared_ptr<ImportedMesh> mesh_of_arrays(const std::string& name, const py::
 exporter::LineDrawing draw(const std::vector<std::shared_ptr<ImportedMesh>>& meshes, const std::string& view_name,
                            const std::optional<std::vector<double>>& direction,
                            const std::optional<std::vector<double>>& up, const std::string& kernel, double crease,
-                           bool intersections, int threads, const py::object& progress) {
+                           bool intersections, const std::vector<std::vector<double>>& suns,
+                           const std::vector<std::vector<double>>& point_lights, int threads,
+                           const py::object& progress) {
   const View view = resolve_view(view_name, direction, up);
   exporter::DrawOptions options;
   options.kernel = kernel_kind(kernel);
   if (!(crease >= 0 && crease <= 180)) bad_option("crease", exporter::number_text(crease) + " degrees is outside [0, 180]");
   options.crease = crease;
   options.intersections = intersections;
+  options.shadow_lights = resolve_lights(suns, point_lights);
+  if (!options.shadow_lights.empty() && options.kernel != KernelKind::exact)
+    bad_option(suns.empty() ? "point_light" : "sun", "shadows are drawn by the exact path only (kernel=\"exact\")");
   PythonProgress python(progress);
   options.progress = python.progress();
   auto limit = thread_limit(threads);
   return python.run([&] {
     const Scene scene = make_scene(meshes);
+    check_point_lights(scene.meshes, options.shadow_lights);
     return exporter::draw_lines(scene, view, options);
+  });
+}
+
+// `hlr shadows MESH... --sun ... --point-light ... [--union] -o OUT.json`: the hlr-shadows/1 text.
+std::string shadows(const std::vector<std::shared_ptr<ImportedMesh>>& meshes, const std::vector<std::vector<double>>& suns,
+                    const std::vector<std::vector<double>>& point_lights, bool union_shadows, int threads,
+                    const py::object& progress) {
+  const std::vector<hidden_line::Light> lights = resolve_lights(suns, point_lights);
+  if (lights.empty()) bad_option("sun", "no light: give sun=(dx, dy, dz) or point_light=(x, y, z)");
+  std::vector<exporter::LightLabel> labels;
+  for (std::size_t k = 0; k < lights.size(); ++k)
+    labels.push_back({k < suns.size() ? "sun" + std::to_string(k + 1) : "point" + std::to_string(k + 1 - suns.size()),
+                      std::nullopt, {}, 0, 0});
+  hidden_line::ShadowOptions options;
+  options.union_shadows = union_shadows;
+  options.light_views = false;
+  PythonProgress python(progress);
+  options.progress = python.progress();
+  auto limit = thread_limit(threads);
+  return python.run([&] {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene scene = make_scene(meshes);
+    check_point_lights(scene.meshes, lights);
+    const double read = hidden_line::seconds_since(start);
+    const hidden_line::ShadowResult result = hidden_line::cast_shadows(scene, lights, options);
+    return exporter::shadows_json({scene.input, scene.meshes, lights, labels, result, read});
   });
 }
 
@@ -448,7 +514,10 @@ PYBIND11_MODULE(_hlrdraw, m) {
           py::arg("hidden"), py::arg("centre_lines"), py::arg("merge_distance"), py::arg("contact_angle"));
 
   m.def("draw", &hlrdraw::draw, py::arg("meshes"), py::arg("view"), py::arg("direction"), py::arg("up"), py::arg("kernel"),
-        py::arg("crease"), py::arg("intersections"), py::arg("threads"), py::arg("progress"));
+        py::arg("crease"), py::arg("intersections"), py::arg("suns"), py::arg("point_lights"), py::arg("threads"),
+        py::arg("progress"));
+  m.def("shadows", &hlrdraw::shadows, py::arg("meshes"), py::arg("suns"), py::arg("point_lights"),
+        py::arg("union_shadows"), py::arg("threads"), py::arg("progress"));
   m.def("surfaces", &hlrdraw::surfaces, py::arg("meshes"), py::arg("view"), py::arg("direction"), py::arg("up"),
         py::arg("kernel"), py::arg("exact"), py::arg("keep_back_faces"), py::arg("consolidation"), py::arg("threads"),
         py::arg("progress"));

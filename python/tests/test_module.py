@@ -136,6 +136,49 @@ def test_clip_gives_the_programs_json(tmp_path):
     assert {len(result["inside"]), len(result["outside"])} <= {1, 2}
 
 
+SHADOW_BOX = os.path.join(SOURCE_DIR, "fixtures", "shadows", "box_on_ground.off")
+
+
+def test_shadows_give_the_programs_json_for_suns_and_point_lights(tmp_path):
+    expected = cli_json(tmp_path, "shadows", SHADOW_BOX, "--sun", "1,2,-4", "--point-light", "1,-4,4", "--union")
+    got = hlrdraw.shadows(SHADOW_BOX, sun=(1, 2, -4), point_light=np.array([1.0, -4.0, 4.0]), union=True)
+    assert without_stats(got) == without_stats(expected)
+    assert got["lights"] == [{"type": "directional", "direction": [1, 2, -4]}, {"type": "point", "position": [1, -4, 4]}]
+    # The ground's lit area under each light (fixtures/shadows/README.md): 393 and 372.
+    ground = next(s for s in got["sources"] if 0 in s["faces"])
+    assert [light["lit_area"] for light in ground["lights"]] == [393, 372]
+    # Several point lights, as a list; a mesh from arrays.
+    two = hlrdraw.shadows(hlrdraw.read_mesh(SHADOW_BOX), point_light=[(1, -4, 4), (1, 1, 4)])
+    assert [light["position"] for light in two["lights"]] == [[1, -4, 4], [1, 1, 4]]
+    ground = next(s for s in two["sources"] if 0 in s["faces"])
+    assert [light["lit_area"] for light in ground["lights"]] == [372, 384]
+
+
+def test_draw_with_a_point_light_is_the_programs_svg(tmp_path):
+    out = tmp_path / "cli.svg"
+    run = run_hlr("draw", SHADOW_BOX, "--view", "top", "--point-light", "1,-4,4", "-o", out)
+    assert run.code == 0, run.err
+    drawing = hlrdraw.draw_file(SHADOW_BOX, view="top", point_light=(1, -4, 4))
+    assert drawing.svg() == out.read_text()
+    assert '<g id="shadows"' in drawing.svg()
+    assert '<g id="shadows"' not in hlrdraw.draw_file(SHADOW_BOX, view="top").svg()
+
+
+def test_bad_lights_raise_one_line(hlr):
+    with pytest.raises(hlrdraw.Error, match=r"^point_light \(1, 1, 1\): .*plane through the light"):
+        hlrdraw.shadows(SHADOW_BOX, point_light=(1, 1, 1))
+    with pytest.raises(hlrdraw.Error, match=r"^point_light \(1, 1, 1\): "):
+        hlrdraw.draw_file(SHADOW_BOX, point_light=(1, 1, 1))
+    with pytest.raises(hlrdraw.Error, match=r"^sun \(0, 0, 0\): .*zero"):
+        hlrdraw.shadows(SHADOW_BOX, sun=(0, 0, 0))
+    with pytest.raises(hlrdraw.Error, match=r"^sun: no light"):
+        hlrdraw.shadows(SHADOW_BOX)
+    with pytest.raises(hlrdraw.Error, match=r"^point_light: expected 3 numbers"):
+        hlrdraw.shadows(SHADOW_BOX, point_light=(1, 2))
+    with pytest.raises(hlrdraw.Error, match=r"^sun: shadows are drawn by the exact path only"):
+        hlrdraw.draw_file(SHADOW_BOX, sun=(1, 2, -4), kernel="epick")
+
+
 # ---- bad input: the program's messages -----------------------------------------------------------
 
 def test_bad_mesh_files_raise_the_programs_message(tmp_path):

@@ -230,13 +230,18 @@ TEST_F(CliShadows, DrawWithSunFillsTheShadowsAndIsTheGoldenFile) {
   EXPECT_EQ(slurp(out("p.dxf")).find("SHADOW"), std::string::npos);
 }
 
-TEST_F(CliShadows, DrawWithPointLightFillsTheShadows) {
+TEST_F(CliShadows, DrawWithPointLightFillsTheShadowsAndIsTheGoldenFile) {
+  // Regenerate (and review the diff) with
+  //   hlr draw fixtures/shadows/box_on_ground.off --view top --point-light 1,-4,4
+  //   -o tests/golden/shadows/box_on_ground_top_point_light.svg -o tests/golden/shadows/box_on_ground_top_point_light.dxf
   const Outcome run = hlr({"draw", box(), "--view", "top", "--point-light", "1,-4,4", "-o", out("d.svg").string(), "-o",
                            out("d.dxf").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string svg = slurp(out("d.svg")), dxf = slurp(out("d.dxf"));
   EXPECT_NE(svg.find("<g id=\"shadows\" fill=\"#d1d1d1\" stroke=\"none\""), std::string::npos);
   EXPECT_NE(dxf.find("SHADOW"), std::string::npos);
+  EXPECT_EQ(svg, slurp(kGolden / "box_on_ground_top_point_light.svg"));
+  EXPECT_EQ(dxf, slurp(kGolden / "box_on_ground_top_point_light.dxf"));
   // Seen from above, the ground's shadow differs from the sun's: not the same drawing.
   ASSERT_EQ(hlr({"draw", box(), "--view", "top", "--sun", "1,2,-4", "-o", out("s.svg").string()}).exit_code, 0);
   EXPECT_NE(svg, slurp(out("s.svg")));
@@ -251,6 +256,56 @@ TEST_F(CliShadows, DrawSunMistakes) {
   expect_failure({"draw", box(), "--view", "iso", "--point-light", "1,-4,4", "--raster", "64", "-o",
                   out("x.svg").string()},
                  2, "hlr: --point-light 1,-4,4: ", "exact path only");
+}
+
+// hlr check --sun/--point-light: the exact lit areas against the raster shadow map.
+TEST_F(CliShadows, CheckComparesTheShadowMapAndItConverges) {
+  const Outcome run = hlr({"check", box(), "--sun", "1,2,-4", "--point-light", "1,-4,4", "--raster", "64,512", "--json",
+                           out("c.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(outputs(), std::vector<std::string>{"c.json"});
+  EXPECT_NE(run.out.find("raster 64, sun 1,2,-4: lit area "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("raster 512, point light 1,-4,4: lit area "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.rfind("check: raster 64 misses "), std::string::npos) << run.out;  // the coarser map is worse
+  const json doc = json::parse(slurp(out("c.json")));
+  EXPECT_EQ(doc.at("format"), "hlr-check/1");
+  ASSERT_EQ(doc.at("lights").size(), 2u);
+  EXPECT_EQ(doc.at("lights").at(1).at("type"), "point");
+  // The exact lit areas of fixtures/shadows/README.md: 393 + 3 * 4 under the sun, 372 + 2 * 4 under the light.
+  EXPECT_NEAR(doc.at("reference").at("lit_area").at(0).get<double>(), 405, 1e-9);
+  EXPECT_NEAR(doc.at("reference").at("lit_area").at(1).get<double>(), 380, 1e-9);
+  EXPECT_NEAR(doc.at("reference").at("area").get<double>(), 424, 1e-9);  // 400 + 6 * 4
+  const json& methods = doc.at("shadow_methods");
+  ASSERT_EQ(methods.size(), 2u);
+  EXPECT_EQ(methods.at(0).at("resolution"), 64);
+  for (int k = 0; k < 2; ++k) {
+    const json& coarse = methods.at(0).at("lights").at(k);
+    const json& fine = methods.at(1).at("lights").at(k);
+    EXPECT_EQ(coarse.at("faces"), 7);
+    EXPECT_EQ(coarse.at("exact_lit_area"), doc.at("reference").at("lit_area").at(k));
+    const double e64 = coarse.at("relative_lit_area_error").get<double>(), e512 = fine.at("relative_lit_area_error").get<double>();
+    EXPECT_GT(e64, 0.0);
+    EXPECT_LT(e512, e64 / 3) << k;
+    EXPECT_LT(fine.at("max_fraction_difference").get<double>(), coarse.at("max_fraction_difference").get<double>());
+    EXPECT_EQ(coarse.at("max_face"), (json{0, 0}));  // the ground: where the shadow edges are
+    EXPECT_NEAR(coarse.at("lit_area_error").get<double>(), e64 * 424, 1e-9);
+    EXPECT_LE(fine.at("mean_fraction_difference").get<double>(), fine.at("max_fraction_difference").get<double>());
+    EXPECT_NEAR(fine.at("raster_lit_area").get<double>(), fine.at("exact_lit_area").get<double>(),
+                fine.at("lit_area_error").get<double>() + 1e-9);
+    EXPECT_GT(fine.at("samples").get<double>(), 30 * coarse.at("samples").get<double>());
+  }
+}
+
+TEST_F(CliShadows, CheckShadowMistakes) {
+  const std::string o = out("c.json").string();
+  expect_failure({"check", box(), "--sun", "0,0,0", "--json", o}, 2, "hlr: --sun 0,0,0: ", "zero");
+  expect_failure({"check", box(), "--point-light", "1,1,1", "--json", o}, 2, "hlr: --point-light 1,1,1: ",
+                 "plane through the light");
+  expect_failure({"check", box(), "--sun", "1,2,-4", "--view", "top", "--json", o}, 2, "hlr: --sun 1,2,-4: ", "no view");
+  expect_failure({"check", box(), "--sun", "1,2,-4", "--kernels", "epick", "--json", o}, 2, "hlr: --kernels: ");
+  expect_failure({"check", box(), "--sun", "1,2,-4", "--diff", out("c.png").string()}, 2, "hlr: --diff: ");
+  expect_failure({"check", box(), "--sun", "1,2,-4", "--raster", "8", "--json", o}, 2, "hlr: ", "--raster");
+  expect_failure({"check", box(), "--sun", "1,2,-4", "--json", out("c.txt").string()}, 1, "hlr: " + out("c.txt").string());
 }
 
 TEST_F(CliShadows, HelpShowsAnExample) {

@@ -62,6 +62,10 @@ std::optional<std::string> light_defect(const Light& light);
 // point_light_defect says so.
 std::optional<View> point_light_view(const std::vector<Mesh>& meshes, const Light& light);
 std::optional<std::string> point_light_defect(const std::vector<Mesh>& meshes, const Light& light);
+// The view from any light: a directional light's orthographic view looking along its direction
+// (up +Z, or +Y when it is vertical), a point light's point_light_view (nothing when it has none).
+// cast_shadows solves the scene in it; the raster shadow map (raster_shadows.hpp) renders it.
+std::optional<View> light_view(const std::vector<Mesh>& meshes, const Light& light);
 
 using ShadowFT = ExactKernel::FT;
 struct ShadowPoint {

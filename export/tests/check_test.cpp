@@ -142,6 +142,43 @@ TEST(PBuffer, PaperPatternBreaksUpDiagonalsWhereArcLengthDashesDoNot) {
   EXPECT_GT(paper_most - paper_least, 0.5) << paper_least << " .. " << paper_most;
 }
 
+// A square face at z = 1 over two quads at z = 0 that meet along x = 0 at a tangent B-rep edge,
+// seen from the top: the smooth line between them is hidden, so neither pattern draws it, while
+// the quads' hidden outline is dashed.
+TEST(PBuffer, HiddenSmoothLinesAreNotDrawn) {
+  Mesh m;
+  m.file = "smooth_under_square";
+  m.vertices = {{-1, -1, 1},      {1, -1, 1},      {1, 1, 1},       {-1, 1, 1},      {-0.5, -0.5, 0},
+                {0, -0.5, 0},     {0, 0.5, 0},     {-0.5, 0.5, 0},  {0.5, -0.5, 0},  {0.5, 0.5, 0}};
+  m.faces = {{0, 1, 2, 3}, {4, 5, 6, 7}, {5, 8, 9, 6}};
+  m.face_index = {0, 1, 2};
+  // Edge 1 of the left quad and edge 3 of the right one are the tangent B-rep edge x = 0.
+  m.source_edges = {0, 1 << 1 | 1 << 5, 1 << 3 | 1 << 7};
+  View top;
+  named_view("top", top);
+  hidden_line::LineOptions lines;
+  lines.features.smooth_edges = SmoothEdges::thin;
+  hidden_line::RasterOptions options;
+  options.resolution = 256;
+  const hidden_line::RasterDrawing raster({m}, top, {}, lines, options);
+  bool has_smooth = false;
+  for (const auto& line : raster.classify().lines) has_smooth |= line.kind == FeatureKind::smooth;
+  ASSERT_TRUE(has_smooth);
+  const hidden_line::RasterGrid& g = raster.grid();
+  for (const auto pattern : {hidden_line::DashPattern::paper, hidden_line::DashPattern::arc_length}) {
+    const hidden_line::RasterImage image = raster.pbuffer(pattern);
+    auto ink_along = [&](double x0, double y0, double x1, double y1) {
+      std::size_t ink = 0;
+      hidden_line::for_each_pixel_step(g, x0, y0, x1, y1, [&](int column, int row, long, long) {
+        ink += image.rgb[(std::size_t(row) * g.width + column) * 3] == 0;
+      });
+      return ink;
+    };
+    EXPECT_EQ(ink_along(0, -0.4, 0, 0.4), 0u) << int(pattern);
+    EXPECT_GT(ink_along(-0.5, -0.4, -0.5, 0.4), 0u) << int(pattern);
+  }
+}
+
 // The exact drawing of a scene (what `hlr check` uses as the reference).
 LineDrawing exact_drawing(const std::vector<Mesh>& meshes, const View& view) {
   using K = ExactKernel;

@@ -176,25 +176,33 @@ RasterImage RasterDrawing::pbuffer(DashPattern pattern) const {
   std::vector<std::vector<std::uint32_t>> lines_of_face(d.faces.size());
   for (std::uint32_t i = 0; i < d.lines.size(); ++i)
     for (std::uint32_t f : d.lines[i].own) lines_of_face[f].push_back(i);
-  std::vector<float> depth(std::size_t(g.width) * g.height, -std::numeric_limits<float>::infinity());
+  // Smooth lines are not drawn hidden: their ink is marked, a nearer face erases it whatever the
+  // pattern, and a farther smooth line pixel is not drawn.
+  const std::size_t pixels = std::size_t(g.width) * g.height;
+  std::vector<float> depth(pixels, -std::numeric_limits<float>::infinity());
+  std::vector<char> smooth_ink(pixels, 0);
   for (std::uint32_t id = 0; id < d.faces.size(); ++id) {
     d.fill_face(id, [&](int column, int row, double z) {
-      float& stored = depth[std::size_t(row) * g.width + column];
-      if (z > stored) {
-        stored = static_cast<float>(z);
-        if (!paper_pattern_passes(column, row)) paint(column, row, kBackground);
+      const std::size_t p = std::size_t(row) * g.width + column;
+      if (z > depth[p]) {
+        depth[p] = static_cast<float>(z);
+        if (smooth_ink[p] || !paper_pattern_passes(column, row)) paint(column, row, kBackground);
+        smooth_ink[p] = 0;
       }
     });
     for (std::uint32_t i : lines_of_face[id]) {
       const RasterLine& r = d.lines[i];
+      const bool smooth = r.line.kind == FeatureKind::smooth;
       for_each_pixel_step(g, r.a[0], r.a[1], r.b[0], r.b[1], [&](int column, int row, long k, long n) {
         const double z = d.normalized(r.a[2] + (double(k) + 0.5) / double(n) * (r.b[2] - r.a[2]));
-        float& stored = depth[std::size_t(row) * g.width + column];
-        if (z > stored) {
-          stored = static_cast<float>(z);
+        const std::size_t p = std::size_t(row) * g.width + column;
+        if (z > depth[p]) {
+          depth[p] = static_cast<float>(z);
           paint(column, row, kLine);
-        } else if (paper_pattern_passes(column, row)) {
+          smooth_ink[p] = smooth;
+        } else if (!smooth && paper_pattern_passes(column, row)) {
           paint(column, row, kLine);
+          smooth_ink[p] = 0;
         }
       });
     }

@@ -17,7 +17,8 @@
 // pbuffer() renders the drawing as an image:
 //   - DashPattern::paper is the paper's single pass: faces in input order, each one's interior
 //     pixels then its feature lines; a nearer interior pixel erases the frame where the pattern
-//     blocks, a farther line pixel is drawn where the pattern passes. The pattern is an 8x8 tile
+//     blocks, a farther line pixel is drawn where the pattern passes (never for a smooth line,
+//     which is not drawn hidden; a nearer interior pixel erases its frame wholly). The pattern is an 8x8 tile
 //     indexed by screen position (a chessboard of 4x4 squares, the one the paper discusses), so
 //     dashes depend on where a line lies on screen, and diagonal lines come out solid or missing;
 //   - DashPattern::arc_length draws the classified pieces instead: hidden samples are dashed by

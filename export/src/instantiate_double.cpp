@@ -16,7 +16,8 @@ LineDrawing make_raster_drawing(const InputInfo& input, const hidden_line::Raste
       const bool smooth = line.kind == FeatureKind::smooth;
       if (smooth && !piece.visible) continue;
       auto at = [&](double t) { return DoublePoint{line.a.x + t * (line.b.x - line.a.x), line.a.y + t * (line.b.y - line.a.y)}; };
-      segments.push_back({at(piece.t0), at(piece.t1), piece.visible, line.mesh, line.meeting_degrees, 0, smooth});
+      segments.push_back(
+          {at(piece.t0), at(piece.t1), piece.visible, line.mesh, line.meeting_degrees, 0, smooth, piece.t0, piece.t1});
     }
   LineDrawing drawing = make_drawing<DoubleKernel>(input, raster.frame(), KernelKind::floating, lines, segments);
   const hidden_line::RasterGrid& grid = raster.grid();

@@ -7,7 +7,10 @@
 // does not depend on the number of threads; and on the exact kernel a piece end equal to an end
 // of its line (t = 0 or 1, known from the interval of t) is that end, and a piece that starts
 // where the one before it ends (the same number) starts at that rounded point. Both give the
-// same double as the general formula, without the arithmetic: the exact value is the same.
+// same double as the general formula, without the arithmetic: the exact value is the same. The
+// ends of intersection lines in orthographic views are rounded from how they were built
+// (kernel/exact_output.hpp: no lazy numbers), and drawing segments by way of their line and
+// parameters, so that their ends take that way too.
 #pragma once
 
 #include <hlr/export/lines.hpp>
@@ -29,6 +32,29 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   d.kernel = kernel;
   d.stats = lines.stats;
 
+  // A line's ends as written: an intersection's by way of its ends' recipes where they apply.
+  const RecipeRounding recipe_rounding(frame.view());
+  auto end_point = [&](const hidden_line::FeatureLine<K>& line, int end) -> Point3 {
+    if constexpr (G::exact_constructions)
+      if (line.end_recipes != line.kNoRecipes)
+        if (const auto v = recipe_rounding.nearest(lines.end_recipes[line.end_recipes][end]))
+          return {(*v)[0] / frame.scale(0) + 0.0, (*v)[1] / frame.scale(1) + 0.0, (*v)[2] / frame.scale(2) + 0.0};
+    const ViewPoint<K>& p = end == 0 ? line.a : line.b;
+    return {frame.rounded(p.x, 0), frame.rounded(p.y, 1), frame.rounded(p.z, 2)};
+  };
+  // The point at t of a line as written (z too when the axes are 3).
+  auto at = [&](const hidden_line::FeatureLine<K>& line, const FT& t, int axes = 3) -> Point3 {
+    if constexpr (G::exact_constructions) {
+      const auto [lo, hi] = G::interval(t);
+      if (lo == hi && (lo == 0 || lo == 1)) return end_point(line, lo == 0 ? 0 : 1);
+    }
+    const FT* from[3] = {&line.a.x, &line.a.y, &line.a.z};
+    const FT* to[3] = {&line.b.x, &line.b.y, &line.b.z};
+    Point3 written{};
+    for (int axis = 0; axis < axes; ++axis) written[axis] = frame.rounded_between(*from[axis], *to[axis], t, axis);
+    return written;
+  };
+
   // Line i's pieces go to d.pieces[first[i], first[i + 1]).
   std::vector<std::size_t> first(lines.lines.size() + 1, 0);
   for (std::size_t i = 0; i < lines.lines.size(); ++i) first[i + 1] = first[i] + lines.lines[i].pieces.size();
@@ -38,18 +64,6 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
     for (std::size_t index = range.begin(); index != range.end(); ++index) {
       const auto& line = lines.lines[index];
       if (line.pieces.empty()) continue;
-      auto end_point = [&](const ViewPoint<K>& p) -> Point3 {
-        return {frame.rounded(p.x, 0), frame.rounded(p.y, 1), frame.rounded(p.z, 2)};
-      };
-      auto at = [&](const FT& t) -> Point3 {
-        if constexpr (G::exact_constructions) {
-          const auto [lo, hi] = G::interval(t);
-          if (lo == hi && lo == 0) return end_point(line.a);
-          if (lo == hi && lo == 1) return end_point(line.b);
-        }
-        return {frame.rounded_between(line.a.x, line.b.x, t, 0), frame.rounded_between(line.a.y, line.b.y, t, 1),
-                frame.rounded_between(line.a.z, line.b.z, t, 2)};
-      };
       DrawingPiece* out = &d.pieces[first[index]];
       for (std::size_t k = 0; k < line.pieces.size(); ++k) {
         const auto& piece = line.pieces[k];
@@ -59,10 +73,10 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
           p.a = out[k - 1].b;
           p.t0 = out[k - 1].t1;
         } else {
-          p.a = at(piece.t0);
+          p.a = at(line, piece.t0);
           p.t0 = G::to_double(piece.t0);
         }
-        p.b = at(piece.t1);
+        p.b = at(line, piece.t1);
         p.t1 = G::to_double(piece.t1);
         p.visible = piece.visible;
         p.kind = line.kind;
@@ -79,9 +93,18 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
     stop.check();
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const auto& s = segments[i];
-      d.segments[i] = {{frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)},
-                       {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)},
-                       s.visible, s.mesh, s.meeting_degrees, s.line, -1, s.thin};
+      Point2 a, b;
+      if constexpr (G::exact_constructions) {
+        // The same exact points by way of their line, so that its ends take the way above.
+        const auto& line = lines.lines[s.line];
+        const Point3 pa = at(line, s.t0, 2), pb = at(line, s.t1, 2);
+        a = {pa[0], pa[1]};
+        b = {pb[0], pb[1]};
+      } else {
+        a = {frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)};
+        b = {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)};
+      }
+      d.segments[i] = {a, b, s.visible, s.mesh, s.meeting_degrees, s.line, -1, s.thin};
     }
   });
   return d;

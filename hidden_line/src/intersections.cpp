@@ -159,44 +159,44 @@ class TriangleChords {
   // Triangle `face` of mesh `mesh` against the plane through a, b, c (three input points, not
   // collinear), known to have corners strictly on both sides of it; `plane_id` names the plane
   // (equal ids: one plane) for sharing crossings.
-  std::array<EK::Point_3, 2> chord(std::uint32_t mesh, std::uint32_t face, const Vec3& a, const Vec3& b, const Vec3& c,
-                                   std::uint64_t plane_id) {
+  struct End {
+    EK::Point_3 point;
+    ModelPointRecipe recipe;
+  };
+  std::array<End, 2> chord(std::uint32_t mesh, std::uint32_t face, const Vec3& a, const Vec3& b, const Vec3& c,
+                           std::uint64_t plane_id) {
     const Mesh& m = meshes_[mesh];
     const auto& t = m.faces[face];
     int side[3];
     for (int k = 0; k < 3; ++k)
       side[k] = CGAL::orientation(ip(a), ip(b), ip(c), ip(m.vertices[t[k]]));
-    std::array<EK::Point_3, 2> out;
+    std::array<End, 2> out;
     int n = 0;
     for (int k = 0; k < 3 && n < 2; ++k) {
       const std::uint32_t u = t[k], w = t[(k + 1) % 3];
-      if (side[k] == 0) out[n++] = input_point<EK>(m, u);
-      else if (side[k] * side[(k + 1) % 3] < 0) out[n++] = crossing(mesh, u, w, a, b, c, plane_id);
+      if (side[k] == 0) {
+        out[n++] = {input_point<EK>(m, u), {ModelPointRecipe::Kind::input_point, m.vertices[u]}};
+      } else if (side[k] * side[(k + 1) % 3] < 0) {
+        out[n++] = {crossing(mesh, u, w, a, b, c, plane_id),
+                    {ModelPointRecipe::Kind::edge_crossing, m.vertices[u], m.vertices[w], a, b, c}};
+      }
     }
     if (n != 2) throw std::logic_error("a triangle straddling a plane did not meet it in two points");
-    if (compare_points(out[1], out[0]) == CGAL::SMALLER) std::swap(out[0], out[1]);
+    if (compare_points(out[1].point, out[0].point) == CGAL::SMALLER) std::swap(out[0], out[1]);
     return out;
   }
 
  private:
   static IK::Point_3 ip(const Vec3& p) { return IK::Point_3(p[0], p[1], p[2]); }
-  // (p - a) . ((b - a) x (c - a)), exactly: ring operations on doubles, in Mpzf (no gcd).
-  static CGAL::Mpzf volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
-    using Z = CGAL::Mpzf;
-    const Z ux = Z(b[0]) - Z(a[0]), uy = Z(b[1]) - Z(a[1]), uz = Z(b[2]) - Z(a[2]);
-    const Z vx = Z(c[0]) - Z(a[0]), vy = Z(c[1]) - Z(a[1]), vz = Z(c[2]) - Z(a[2]);
-    const Z wx = Z(p[0]) - Z(a[0]), wy = Z(p[1]) - Z(a[1]), wz = Z(p[2]) - Z(a[2]);
-    return wx * (uy * vz - uz * vy) + wy * (uz * vx - ux * vz) + wz * (ux * vy - uy * vx);
-  }
-  // u + t (w - u) with t = s_u / (s_u - s_w) is (s_u w - s_w u) / (s_u - s_w): numerators and
-  // denominator in Mpzf, one rational division per coordinate.
+  // u + t (w - u) with t = s_u / (s_u - s_w) is (s_u w - s_w u) / (s_u - s_w), s the volumes
+  // against the plane (plane_volume, in Mpzf: no gcd): one rational division per coordinate.
   EK::Point_3 crossing(std::uint32_t mesh, std::uint32_t u, std::uint32_t w, const Vec3& a, const Vec3& b,
                        const Vec3& c, std::uint64_t plane_id) {
     auto [it, added] = crossings_.try_emplace({edge_key(u, w), plane_id, mesh});
     if (added) {
       using Z = CGAL::Mpzf;
       const Vec3 &pu = meshes_[mesh].vertices[u], &pw = meshes_[mesh].vertices[w];
-      const Z su = volume(a, b, c, pu), sw = volume(a, b, c, pw);
+      const Z su = plane_volume(a, b, c, pu), sw = plane_volume(a, b, c, pw);
       const ET den = ET(su - sw);
       FT x[3];
       for (int k = 0; k < 3; ++k) x[k] = FT(ET(ET(su * Z(pw[k]) - sw * Z(pu[k])) / den));
@@ -293,6 +293,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     EK::Point_3 a, b;  // a < b lexicographically
     std::uint32_t face_a, face_b;
     double meeting_degrees;
+    ModelPointRecipe recipe_a{}, recipe_b{};
   };
   auto rough_normal_of = [&](const FaceRef& r) {
     const auto& pv = topo[r.mesh].plane_vertices[r.face];
@@ -333,9 +334,10 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
             return chords.chord(t.mesh, t.face, om.vertices[pv[0]], om.vertices[pv[1]], om.vertices[pv[2]], plane_id);
           };
           const auto in_f = chord(f, g), in_g = chord(g, f);
-          const EK::Point_3& lo = compare_points(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
-          const EK::Point_3& hi = compare_points(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
-          if (compare_points(lo, hi) == CGAL::SMALLER) out.push_back({key, {lo, hi, f.face, g.face, meeting_degrees}});
+          const auto& lo = compare_points(in_f[0].point, in_g[0].point) == CGAL::LARGER ? in_f[0] : in_g[0];
+          const auto& hi = compare_points(in_f[1].point, in_g[1].point) == CGAL::SMALLER ? in_f[1] : in_g[1];
+          if (compare_points(lo.point, hi.point) == CGAL::SMALLER)
+            out.push_back({key, {lo.point, hi.point, f.face, g.face, meeting_degrees, lo.recipe, hi.recipe}});
           continue;
         }
         const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);
@@ -369,10 +371,14 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     std::sort(list.begin(), list.end(),
               [](const Piece& x, const Piece& y) { return compare_points(x.a, y.a) == CGAL::SMALLER; });
     for (std::size_t k = 0; k < list.size();) {
-      IntersectionSegment s{list[k].a,          list[k].b,          std::get<0>(key), std::get<2>(key),
-                            {list[k].face_a}, {list[k].face_b}, list[k].meeting_degrees};
+      IntersectionSegment s{list[k].a,          list[k].b,          std::get<0>(key),        std::get<2>(key),
+                            {list[k].face_a}, {list[k].face_b}, list[k].meeting_degrees, list[k].recipe_a,
+                            list[k].recipe_b};
       for (++k; k < list.size() && compare_points(list[k].a, s.b) != CGAL::LARGER; ++k) {
-        if (compare_points(list[k].b, s.b) == CGAL::LARGER) s.b = list[k].b;
+        if (compare_points(list[k].b, s.b) == CGAL::LARGER) {
+          s.b = list[k].b;
+          s.recipe_b = list[k].recipe_b;
+        }
         s.faces_a.push_back(list[k].face_a);
         s.faces_b.push_back(list[k].face_b);
       }

@@ -456,6 +456,10 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
         line.kind = FeatureKind::intersection;
         line.mesh = s.mesh_a;
         line.meeting_degrees = s.meeting_degrees;
+        if (!frame.perspective()) {  // there the ends are s.a and s.b, not cut by a near plane
+          line.end_recipes = std::uint32_t(out.end_recipes.size());
+          out.end_recipes.push_back({s.recipe_a, s.recipe_b});
+        }
         add(std::move(line), {{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
       }
     }
@@ -611,7 +615,8 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       const FeatureLine<K>& line = lines.lines[span.line];
       const auto a = image.at(span.t0), b = image.at(span.t1);
       if (alone) {
-        emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees, span.line, span.thin});
+        emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees, span.line, span.thin,
+                                                span.t0, span.t1});
         continue;
       }
       std::vector<std::pair<FT, FT>> covered;
@@ -632,7 +637,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       bool at_start = true;  // from is span.t0, whose point is a
       auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
         const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
-                                line.meeting_degrees, span.line, span.thin};
+                                line.meeting_degrees, span.line, span.thin, t0, t1};
         grid->insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
         out.push_back(d);
         drawn_line.push_back(span.line);

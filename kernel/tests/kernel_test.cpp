@@ -1,6 +1,7 @@
 // The traits interface answers the same on every kernel where the answer is representable, and
 // the exact kernel keeps what double rounds away.
 #include <hlr/kernel/kernel.hpp>
+#include <hlr/kernel/exact_output.hpp>
 #include <hlr/kernel/line_box.hpp>
 
 #include <gtest/gtest.h>
@@ -157,6 +158,76 @@ TEST(ExactKernel, LineMissesBoxOnlyWhenEveryCornerIsOnOneSide) {
   }
   EXPECT_GT(misses, clear * 9 / 10) << "the filter should decide most clear misses";
   EXPECT_FALSE(line_misses_box<DoubleKernel>(DoublePoint{0, 0}, DoublePoint{1, 0}, CGAL::Bbox_2(0, 1, 1, 2)));
+}
+
+}  // namespace
+}  // namespace hlr
+
+namespace hlr {
+namespace {
+
+// nearest_quotient against Geometry::to_double of the same rational: quotients of snapped values
+// (many exact, many ties between two doubles) and of random ones, of either sign, and the ties
+// 2^53 + 1 and its negative, which go to the lower double.
+TEST(ExactOutput, NearestQuotientRoundsAsToDouble) {
+  using G = Geometry<ExactKernel>;
+  using ET = ExactKernel::FT::Exact_type;
+  using Z = CGAL::Mpzf;
+  auto expected = [](const Z& num, const Z& den) { return G::to_double(ExactKernel::FT(ET(ET(num) / ET(den)))); };
+  const Z big = Z(9007199254740992.0) + Z(1);
+  EXPECT_EQ(nearest_quotient(big, Z(1)), 9007199254740992.0);
+  EXPECT_EQ(nearest_quotient(-big, Z(1)), -9007199254740994.0);
+  EXPECT_EQ(nearest_quotient(big, Z(-1)), -9007199254740994.0);
+  EXPECT_EQ(nearest_quotient(Z(1), Z(0)), std::nullopt);
+  EXPECT_EQ(nearest_quotient(Z(0), Z(3)), 0.0);
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> any(-1e3, 1e3);
+  std::uniform_int_distribution<int> grid(-8, 8);
+  for (int i = 0; i < 20000; ++i) {
+    const bool snapped = i % 2 == 0;
+    auto value = [&] { return snapped ? grid(random) / 4.0 : any(random); };
+    const Z num = Z(value()) * Z(value()) + Z(value()) * Z(std::ldexp(value(), 60));
+    const Z den = Z(value()) * Z(value()) - Z(value());
+    if (den.sign() == CGAL::ZERO) continue;
+    const std::optional<double> got = nearest_quotient(num, den);
+    ASSERT_TRUE(got.has_value() || num.sign() != CGAL::ZERO) << i;
+    if (got) {
+      ASSERT_EQ(*got, expected(num, den)) << i;
+    } else {
+      const double e = expected(num, den);
+      EXPECT_FALSE(std::isnormal(e) && std::isnormal(std::nextafter(e, HUGE_VAL))) << i << " " << e;
+    }
+  }
+}
+
+// RecipeRounding gives the view coordinates ViewFrame gives, rounded, for a crossing of an edge
+// with a plane and for an input point, in a general and in a named view.
+TEST(ExactOutput, RecipesRoundAsTheViewFrame) {
+  using G = Geometry<ExactKernel>;
+  using FT = ExactKernel::FT;
+  for (const View& view : {View{"custom", {1, 2, -3}, {0, 0, 1}}, View{"iso", {-1, 1, -1}, {0, 0, 1}}}) {
+    const ViewFrame<ExactKernel> frame(view);
+    const RecipeRounding rounding(view);
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> any(-10, 10);
+    for (int i = 0; i < 500; ++i) {
+      auto point = [&] { return Vec3{any(random), any(random), any(random)}; };
+      ModelPointRecipe r{ModelPointRecipe::Kind::edge_crossing, point(), point(), point(), point(), point()};
+      if (i % 5 == 0) r.kind = ModelPointRecipe::Kind::input_point;
+      const auto n = homogeneous(r);
+      if (n[3].sign() == CGAL::ZERO) continue;
+      using ET = FT::Exact_type;
+      FT p[3];
+      for (int k = 0; k < 3; ++k) p[k] = FT(ET(ET(n[k]) / ET(n[3])));
+      const ViewPoint<ExactKernel> v = frame.to_view(p[0], p[1], p[2]);
+      const auto got = rounding.nearest(r);
+      ASSERT_TRUE(got.has_value()) << i;
+      EXPECT_EQ((*got)[0], G::to_double(v.x)) << i;
+      EXPECT_EQ((*got)[1], G::to_double(v.y)) << i;
+      EXPECT_EQ((*got)[2], G::to_double(v.z)) << i;
+    }
+  }
+  EXPECT_FALSE(RecipeRounding(View{"p", {0, 0, -1}, {0, 1, 0}, Vec3{0, 0, 5}}).nearest({ModelPointRecipe::Kind::input_point}));
 }
 
 }  // namespace

@@ -21,10 +21,12 @@
 #pragma once
 
 #include <hlr/hidden_line/visibility.hpp>
+#include <hlr/kernel/exact_output.hpp>
 #include <hlr/kernel/features.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -40,6 +42,8 @@ struct IntersectionSegment {
   // The angle between the two planes in degrees, in (0, 90], rounded: not a decision of the exact
   // path, but what drawings use to leave out the contact lines of nearly tangent surfaces.
   double meeting_degrees = 90;
+  // How a and b were built from the input, for their rounding in output (kernel/exact_output.hpp).
+  ModelPointRecipe recipe_a, recipe_b;
 };
 
 // Throws Cancelled when `stop` asks (polled between candidate face pairs).
@@ -64,6 +68,9 @@ struct FeatureLine {
   // not where the near plane of a perspective view cuts the edge (an end is then constructed).
   bool has_model_ends = false;
   Vec3 model_a{}, model_b{};
+  // Intersections in orthographic views: the index of their ends' recipes in LineSet::end_recipes.
+  static constexpr std::uint32_t kNoRecipes = UINT32_MAX;
+  std::uint32_t end_recipes = kNoRecipes;
 };
 
 struct LineStats {
@@ -79,6 +86,7 @@ struct LineSet {
   LineStats stats;
   Vec3 view_direction{0, 0, -1};  // of the view the lines were classified in
   std::optional<Vec3> view_eye;   // and its eye, when it is a perspective view
+  std::vector<std::array<ModelPointRecipe, 2>> end_recipes;  // see FeatureLine::end_recipes
 };
 
 struct LineOptions {
@@ -106,6 +114,7 @@ struct DrawnSegment {
   double meeting_degrees = 90;  // of its line
   std::uint32_t line = 0;       // its line's index in the LineSet
   bool thin = false;            // a visible piece of a smooth line: thin continuous
+  typename Geometry<K>::FT t0, t1;  // where a and b lie along the line (FeatureLine's a + t (b - a))
 };
 
 template <class K>

@@ -1,0 +1,118 @@
+// Correctly rounded output of constructed points without lazy numbers.
+//
+// Output rounds every line end once, correctly (Geometry::to_double). For an intersection line's
+// end on Epeck that means evaluating its view coordinate X·p exactly: a lazy node per product
+// and sum over rationals whose every operation takes a gcd, each node behind a once-flag (a futex
+// call) and an MPFR refresh of its interval, about 10 µs per coordinate. Yet such an end is
+// either an input point or where an edge u w crosses the plane through three input points a, b,
+// c: p = (s_u w − s_w u) / (s_u − s_w) with s the signed volumes against the plane, so in an
+// orthographic view X·p is a quotient of two sums of products of doubles, exact in CGAL::Mpzf
+// (binary floating point of any length: no gcd, no heap for short numbers), and its nearest
+// double takes a few multiplications. It is the same exact number, so the same double.
+#pragma once
+
+#include <hlr/kernel/view.hpp>
+
+#include <CGAL/Mpzf.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace hlr {
+
+// How a constructed model point was built from the input doubles.
+struct ModelPointRecipe {
+  enum class Kind : std::uint8_t { unknown, input_point, edge_crossing };
+  Kind kind = Kind::unknown;
+  Vec3 u{}, w{};     // input_point: u; edge_crossing: the edge from u to w ...
+  Vec3 a{}, b{}, c{};  // ... where it crosses the plane through these (not collinear)
+};
+
+// (p − a)·((b − a) × (c − a)), exactly.
+inline CGAL::Mpzf plane_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+  using Z = CGAL::Mpzf;
+  const Z ux = Z(b[0]) - Z(a[0]), uy = Z(b[1]) - Z(a[1]), uz = Z(b[2]) - Z(a[2]);
+  const Z vx = Z(c[0]) - Z(a[0]), vy = Z(c[1]) - Z(a[1]), vz = Z(c[2]) - Z(a[2]);
+  const Z wx = Z(p[0]) - Z(a[0]), wy = Z(p[1]) - Z(a[1]), wz = Z(p[2]) - Z(a[2]);
+  return wx * (uy * vz - uz * vy) + wy * (uz * vx - ux * vz) + wz * (ux * vy - uy * vx);
+}
+
+// The point as numerators and a common denominator: p = (n[0], n[1], n[2]) / n[3].
+inline std::array<CGAL::Mpzf, 4> homogeneous(const ModelPointRecipe& r) {
+  using Z = CGAL::Mpzf;
+  if (r.kind == ModelPointRecipe::Kind::input_point) return {Z(r.u[0]), Z(r.u[1]), Z(r.u[2]), Z(1)};
+  const Z su = plane_volume(r.a, r.b, r.c, r.u), sw = plane_volume(r.a, r.b, r.c, r.w);
+  std::array<Z, 4> n;
+  for (int k = 0; k < 3; ++k) n[k] = su * Z(r.w[k]) - sw * Z(r.u[k]);
+  n[3] = su - sw;
+  return n;
+}
+
+// The double nearest to num / den, ties to the lower one (as Geometry::to_double rounds); nothing
+// when den is 0 or the quotient is not in the normal range of doubles.
+inline std::optional<double> nearest_quotient(CGAL::Mpzf num, CGAL::Mpzf den) {
+  using Z = CGAL::Mpzf;
+  if (den.sign() == CGAL::ZERO) return std::nullopt;
+  if (den.sign() == CGAL::NEGATIVE) {
+    num = -num;
+    den = -den;
+  }
+  if (num.sign() == CGAL::ZERO) return 0.0;
+  constexpr double up = std::numeric_limits<double>::infinity();
+  // lo, the largest double at most num / den, from a guess a few units in the last place off.
+  double lo = num.to_double() / den.to_double();
+  auto at_most = [&](double x) { return Z(x) * den <= num; };
+  for (int step = 0; !at_most(lo); ++step) {
+    if (step == 8 || !std::isnormal(lo)) return std::nullopt;
+    lo = std::nextafter(lo, -up);
+  }
+  for (int step = 0; at_most(std::nextafter(lo, up)); ++step) {
+    if (step == 8 || !std::isnormal(lo)) return std::nullopt;
+    lo = std::nextafter(lo, up);
+  }
+  const double hi = std::nextafter(lo, up);
+  if (!std::isnormal(lo) || !std::isnormal(hi)) return std::nullopt;
+  if (Z(lo) * den == num) return lo;
+  // num / den − lo <= hi − num / den, that is 2 num <= (lo + hi) den.
+  return num + num <= (Z(lo) + Z(hi)) * den ? lo : hi;
+}
+
+// Orthographic views: the view coordinates of recipe points, rounded as ViewFrame::rounded does
+// the same exact numbers (before its division by the axis scale).
+class RecipeRounding {
+ public:
+  explicit RecipeRounding(const View& view) {
+    if (view.eye) return;  // perspective coordinates are quotients of these: left to the general path
+    const Row d = {Z(view.direction[0]), Z(view.direction[1]), Z(view.direction[2])};
+    const Row u = {Z(view.up[0]), Z(view.up[1]), Z(view.up[2])};
+    const Row x = cross(d, u);  // ViewFrame's basis: X = d × up, Y = X × d, Z = −d
+    basis_ = {{x, cross(x, d), {-d[0], -d[1], -d[2]}}};
+  }
+
+  // The nearest doubles to the point's view coordinates, or nothing where the general path must
+  // round them (an unknown recipe, a perspective view, a value out of the normal range).
+  std::optional<std::array<double, 3>> nearest(const ModelPointRecipe& r) const {
+    if (!basis_ || r.kind == ModelPointRecipe::Kind::unknown) return std::nullopt;
+    const std::array<Z, 4> n = homogeneous(r);
+    std::array<double, 3> out;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Row& a = (*basis_)[axis];
+      const std::optional<double> v = nearest_quotient(a[0] * n[0] + a[1] * n[1] + a[2] * n[2], n[3]);
+      if (!v) return std::nullopt;
+      out[axis] = *v;
+    }
+    return out;
+  }
+
+ private:
+  using Z = CGAL::Mpzf;
+  using Row = std::array<Z, 3>;
+  static Row cross(const Row& a, const Row& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  }
+  std::optional<std::array<Row, 3>> basis_;
+};
+
+}  // namespace hlr

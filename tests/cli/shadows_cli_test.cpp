@@ -124,6 +124,35 @@ TEST_F(CliShadows, PointLightWritesJsonCsvAndSvg) {
   EXPECT_NE(svg.find("point1 at (1.0, -4.0, 4.0)"), std::string::npos);
 }
 
+TEST_F(CliShadows, PointLightAmongTheGeometry) {
+  // fixtures/shadows/README.md: the light between two boxes needs the cube of six views.
+  const std::string between = (kShadowFixtures / "light_between_boxes.off").string();
+  const Outcome run = hlr({"shadows", between, "--point-light", "0,0,1", "-o", out("p.json").string(), "-o",
+                           out("p.csv").string(), "-o", out("p.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(outputs(), (std::vector<std::string>{"p.csv", "p.json", "p.svg"}));
+  const json doc = json::parse(slurp(out("p.json")));
+  EXPECT_EQ(doc.at("lights").at(0), json({{"type", "point"}, {"position", {0.0, 0.0, 1.0}}}));
+  EXPECT_EQ(doc.at("sources").at(0).at("faces"), json({0}));
+  EXPECT_EQ(doc.at("sources").at(0).at("lights").at(0).at("lit_area"), 177.5);
+  std::istringstream csv(slurp(out("p.csv")));
+  std::string line;
+  std::getline(csv, line);
+  std::getline(csv, line);
+  EXPECT_EQ(line, "0,0,400.0,177.5,0.44375");
+  EXPECT_NE(slurp(out("p.svg")).find("<g id=\"light-0\">"), std::string::npos);
+  const Outcome draw = hlr({"draw", between, "--view", "iso", "--point-light", "0,0,1", "-o", out("d.svg").string()});
+  ASSERT_EQ(draw.exit_code, 0) << draw.err;
+  EXPECT_NE(slurp(out("d.svg")).find("id=\"shadows\""), std::string::npos);
+  // Inside box A: refused, no file.
+  fs::remove(out("p.json"));
+  fs::remove(out("p.csv"));
+  fs::remove(out("p.svg"));
+  fs::remove(out("d.svg"));
+  expect_failure({"shadows", between, "--point-light", "-2,0,1", "-o", out("x.json").string()}, 2,
+                 "hlr: --point-light -2,0,1: ", "inside a closed solid");
+}
+
 TEST_F(CliShadows, CsvIsTheGoldenFile) {
   // Regenerate: hlr shadows fixtures/shadows/two_boxes.off --sun -1,0,-1 --sun 1,2,-4 --sun 0,0,-1
   //   --union -o tests/golden/shadows/two_boxes.csv (and review the diff).
@@ -161,14 +190,15 @@ TEST_F(CliShadows, BadInputIsOneLineAndNoFile) {
   expect_failure({"shadows", box(), "--sun", "1,nan,-1", "-o", o}, 2, "hlr: --sun 1,nan,-1: ", "not finite");
   expect_failure({"shadows", box(), "--sun", "1,2", "-o", o}, 2, "hlr: --sun 1,2: ");
   expect_failure({"shadows", box(), "-o", o}, 2, "hlr: ", "no light");
-  // Point lights: non-finite, malformed, and where one perspective view cannot serve: inside the
-  // box, on its top face, in the ground's plane among its corners.
+  // Point lights: non-finite, malformed, and where nothing can serve: inside the box, on its top
+  // face, on the ground.
   expect_failure({"shadows", box(), "--point-light", "0,inf,10", "-o", o}, 2, "hlr: --point-light 0,inf,10: ",
                  "not finite");
   expect_failure({"shadows", box(), "--point-light", "0,10", "-o", o}, 2, "hlr: --point-light 0,10: ");
-  for (const std::string inside : {"1,1,1", "1,1,2", "5,5,0"})
-    expect_failure({"shadows", box(), "--sun", "1,2,-4", "--point-light", inside, "-o", o, "-o", out("x.svg").string()},
-                   2, "hlr: --point-light " + inside + ": ", "plane through the light");
+  for (const auto& [light, why] : std::vector<std::pair<std::string, std::string>>{
+           {"1,1,1", "inside a closed solid of " + box()}, {"1,1,2", "on face 2 of " + box()}, {"5,5,0", "on face 0 of " + box()}})
+    expect_failure({"shadows", box(), "--sun", "1,2,-4", "--point-light", light, "-o", o, "-o", out("x.svg").string()},
+                   2, "hlr: --point-light " + light + ": ", why);
   expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "-o", o}, 2, "hlr: --sun-at", "--site");
   expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "--site", "91,0", "-o", o}, 2, "hlr: --site 91,0: ",
                  "latitude");
@@ -252,7 +282,7 @@ TEST_F(CliShadows, DrawSunMistakes) {
   expect_failure({"draw", box(), "--view", "iso", "--sun", "1,2,-4", "--kernel", "epick", "-o", out("x.svg").string()},
                  2, "hlr: --sun 1,2,-4: ", "exact path only");
   expect_failure({"draw", box(), "--view", "iso", "--point-light", "1,1,1", "-o", out("x.svg").string()}, 2,
-                 "hlr: --point-light 1,1,1: ", "plane through the light");
+                 "hlr: --point-light 1,1,1: ", "inside a closed solid");
   expect_failure({"draw", box(), "--view", "iso", "--point-light", "1,-4,4", "--raster", "64", "-o",
                   out("x.svg").string()},
                  2, "hlr: --point-light 1,-4,4: ", "exact path only");
@@ -300,7 +330,9 @@ TEST_F(CliShadows, CheckShadowMistakes) {
   const std::string o = out("c.json").string();
   expect_failure({"check", box(), "--sun", "0,0,0", "--json", o}, 2, "hlr: --sun 0,0,0: ", "zero");
   expect_failure({"check", box(), "--point-light", "1,1,1", "--json", o}, 2, "hlr: --point-light 1,1,1: ",
-                 "plane through the light");
+                 "inside a closed solid");
+  expect_failure({"check", (kShadowFixtures / "light_between_boxes.off").string(), "--point-light", "0,0,1", "--json", o},
+                 2, "hlr: --point-light 0,0,1: ", "among the geometry");
   expect_failure({"check", box(), "--sun", "1,2,-4", "--view", "top", "--json", o}, 2, "hlr: --sun 1,2,-4: ", "no view");
   expect_failure({"check", box(), "--sun", "1,2,-4", "--kernels", "epick", "--json", o}, 2, "hlr: --kernels: ");
   expect_failure({"check", box(), "--sun", "1,2,-4", "--diff", out("c.png").string()}, 2, "hlr: --diff: ");

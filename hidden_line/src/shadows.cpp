@@ -12,6 +12,9 @@
 //      hidden fragments are cast shadow, tagged with the faces of the visible fragments over them;
 //      per-face lit areas come from clipping the lit fragments by each face of a consolidated
 //      source in the light view, where faces and fragments share their support lines.
+// A point light among the geometry runs stages 1-3 once per pyramid of its cube (cube_views), the
+// sources of each view cut to its square first; lit pieces, shadows and per-face areas add up
+// over the views (each piece lies in one pyramid).
 // Sources facing away or seen edge-on are in attached shadow: their model-space polygons, built
 // once for all lights (model_sources), are the shadow.
 // shadows_in_view takes the result into another view as surface detail (hlr draw --sun).

@@ -153,6 +153,69 @@ TEST_F(CliShadows, PointLightAmongTheGeometry) {
                  "hlr: --point-light -2,0,1: ", "inside a closed solid");
 }
 
+// hlr sheet --sun/--point-light: every view carries the shadows, as hlr draw --view NAME does.
+TEST_F(CliShadows, SheetDrawsTheShadowsOnEveryView) {
+  const std::string between = (kShadowFixtures / "light_between_boxes.off").string();
+  const Outcome run = hlr({"sheet", between, "--views", "front,top,iso", "--point-light", "0,0,1", "--sun", "1,2,-4", "-o",
+                           out("s.svg").string(), "-o", out("s.dxf").string(), "-o", out("s.pdf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = slurp(out("s.svg"));
+  const std::string dxf = slurp(out("s.dxf"));
+  EXPECT_EQ(slurp(out("s.pdf")).rfind("%PDF", 0), 0u);
+  for (const std::string view : {"front", "top", "iso"}) {
+    SCOPED_TRACE(view);
+    // The view's shadow group lies inside the view's group and holds filled paths, the same areas
+    // hlr draw --view NAME fills.
+    const std::size_t group = svg.find("<g id=\"view-" + view + "\"");
+    const std::size_t shadows = svg.find("<g id=\"view-" + view + "-shadows\"");
+    ASSERT_NE(group, std::string::npos);
+    ASSERT_NE(shadows, std::string::npos);
+    EXPECT_LT(group, shadows);
+    EXPECT_EQ(svg.find("<g id=\"view-", group + 1), shadows);  // no other view's group between them
+    const std::size_t end = svg.find("</g>", shadows);
+    std::size_t sheet_paths = 0;
+    for (std::size_t at = svg.find("<path", shadows); at < end; at = svg.find("<path", at + 1)) ++sheet_paths;
+    const Outcome draw = hlr({"draw", between, "--view", view, "--point-light", "0,0,1", "--sun", "1,2,-4", "-o",
+                              out("d.svg").string(), "-o", out("d.dxf").string()});
+    ASSERT_EQ(draw.exit_code, 0) << draw.err;
+    const std::string drawn = slurp(out("d.svg"));
+    const std::size_t own = drawn.find("<g id=\"shadows\"");
+    ASSERT_NE(own, std::string::npos);
+    std::size_t draw_paths = 0;
+    for (std::size_t at = drawn.find("<path", own); at < drawn.find("</g>", own); at = drawn.find("<path", at + 1)) ++draw_paths;
+    EXPECT_GT(sheet_paths, 0u);
+    EXPECT_EQ(sheet_paths, draw_paths);
+    // DXF: the view's block has HATCH entities on SHADOW, as many as the drawing's.
+    std::string upper = view;
+    for (char& ch : upper) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+    const std::size_t block = dxf.find("\nVIEW_" + upper + "\n", dxf.find("\nBLOCKS\n"));
+    ASSERT_NE(block, std::string::npos);
+    const std::size_t block_end = dxf.find("ENDBLK", block);
+    std::size_t hatches = 0;
+    for (std::size_t at = dxf.find("\nHATCH\n", block); at < block_end; at = dxf.find("\nHATCH\n", at + 1)) ++hatches;
+    const std::string drawn_dxf = slurp(out("d.dxf"));
+    std::size_t drawn_hatches = 0;
+    for (std::size_t at = drawn_dxf.find("\nHATCH\n"); at != std::string::npos; at = drawn_dxf.find("\nHATCH\n", at + 1))
+      ++drawn_hatches;
+    EXPECT_EQ(hatches, drawn_hatches);
+    EXPECT_GT(hatches, 0u);
+  }
+  EXPECT_NE(dxf.find("\nSHADOW\n"), std::string::npos);
+  // Without lights the sheet has no shadows and no SHADOW layer.
+  const Outcome plain = hlr({"sheet", between, "--views", "front", "-o", out("p.dxf").string(), "-o", out("p.svg").string()});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(slurp(out("p.dxf")).find("\nSHADOW\n"), std::string::npos);
+  EXPECT_EQ(slurp(out("p.svg")).find("-shadows\""), std::string::npos);
+}
+
+TEST_F(CliShadows, SheetShadowMistakes) {
+  const std::string o = out("s.svg").string();
+  expect_failure({"sheet", box(), "--point-light", "1,1,1", "-o", o}, 2, "hlr: --point-light 1,1,1: ", "inside a closed solid");
+  expect_failure({"sheet", box(), "--sun", "0,0,0", "-o", o}, 2, "hlr: --sun 0,0,0: ", "zero");
+  expect_failure({"sheet", box(), "--sun", "1,2,-4", "--kernel", "epick", "-o", o}, 2, "hlr: --sun 1,2,-4: ",
+                 "exact path only");
+}
+
 TEST_F(CliShadows, CsvIsTheGoldenFile) {
   // Regenerate: hlr shadows fixtures/shadows/two_boxes.off --sun -1,0,-1 --sun 1,2,-4 --sun 0,0,-1
   //   --union -o tests/golden/shadows/two_boxes.csv (and review the diff).

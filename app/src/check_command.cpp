@@ -75,6 +75,12 @@ int run_shadows(CheckOptions options) {
   RunScope run(options.scene.limits, options.scene.threads);
   const Scene scene = run.read(options.scene.meshes, options.scene.cad);
   check_point_lights(scene.meshes, options.point_lights);
+  // The shadow map is one view per light: a point light among the geometry, which the exact path
+  // solves in a cube of six views, has none.
+  for (std::size_t i = 0; i < options.point_lights.size(); ++i)
+    if (!hidden_line::point_light_view(scene.meshes, lights[options.suns.size() + i]))
+      throw UsageError("--point-light " + options.point_lights[i] +
+                       ": the raster shadow map takes a light that one perspective view serves, not one among the geometry");
   const exporter::ShadowCheckReport report = exporter::check_shadows(scene, lights, options.rasters, run.progress());
   if (json_file) {
     json_file->write(exporter::shadow_check_json(report));

@@ -1,12 +1,15 @@
 // `hlr sheet MESH... [--views front,top,right,iso] [--dir X,Y,Z [--up X,Y,Z]] [--projection
 //             first|third] [sheet options: style_options.hpp] [--title T --number N --author A
-//             --date D --revision R] -o OUT.svg|OUT.pdf|OUT.dxf [-o ...]`
+//             --date D --revision R] [--sun DX,DY,DZ ...] [--point-light X,Y,Z ...]
+//             -o OUT.svg|OUT.pdf|OUT.dxf [-o ...]`
 //
 // Several views of one scene on one sheet: each view is drawn exactly as `hlr draw --view NAME`
-// draws it (exporter::draw_lines: the same job, one intersection search for all views), then laid out
-// by the export library (hlr/export/sheet.hpp) and written in every format asked for.
+// draws it (exporter::draw_lines: the same job, one intersection search for all views, and with
+// lights their shadows solved once for all views), then laid out by the export library
+// (hlr/export/sheet.hpp) and written in every format asked for.
 #include "atomic_file.hpp"
 #include "errors.hpp"
+#include "light_options.hpp"
 #include "line_options.hpp"
 #include "run_scope.hpp"
 #include "style_options.hpp"
@@ -33,6 +36,7 @@ struct SheetOptions {
   exporter::DrawOptions lines;
   StyleOptions style;
   exporter::SheetFields fields;
+  std::vector<std::string> suns, point_lights;  // shadows as surface detail of every view
 };
 
 enum class Format { svg, pdf, dxf };
@@ -106,6 +110,22 @@ int run(const SheetOptions& options) {
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;
   job.progress = run.progress();
+  // Shadows: every light solved once, from the light; each view then takes the shadow polygons
+  // into itself (exporter::draw_lines with DrawOptions::shadows).
+  job.shadow_lights = parse_suns(options.suns);
+  for (const auto& light : parse_point_lights(options.point_lights)) job.shadow_lights.push_back(light);
+  std::optional<hidden_line::ShadowResult> shadows;
+  if (!job.shadow_lights.empty()) {
+    const std::string first = options.suns.empty() ? "--point-light " + options.point_lights.front() : "--sun " + options.suns.front();
+    if (kind != KernelKind::exact) throw UsageError(first + ": shadows are drawn by the exact path only");
+    check_point_lights(scene.meshes, options.point_lights);
+    run.stage("shadows of " + std::to_string(job.shadow_lights.size()) + " light(s)");
+    hidden_line::ShadowOptions shadow_options;
+    shadow_options.light_views = false;
+    shadow_options.progress = job.progress;
+    shadows = hidden_line::cast_shadows(scene, job.shadow_lights, shadow_options);
+    job.shadows = &*shadows;
+  }
   const exporter::SceneIntersections intersections(scene, job.intersections, job.progress);  // found once, for all views
   std::vector<exporter::LineDrawing> drawings;
   drawings.reserve(views->size());
@@ -193,6 +213,13 @@ Subcommand add_sheet_command(CLI::App& parent) {
   add_cad_options(*cmd, options->cad);
   options->style.sheet = "A3";
   add_style_options(*cmd, options->style);
+  cmd->add_option("--sun", options->suns,
+                  "draw the shadows of a directional light whose rays travel along DX,DY,DZ on every view "
+                  "(as hlr draw --sun: filled light grey; DXF: HATCH on layer SHADOW); may be given several times")
+      ->type_name("DX,DY,DZ");
+  cmd->add_option("--point-light", options->point_lights,
+                  "draw the shadows of a point light at X,Y,Z on every view likewise; may be given several times")
+      ->type_name("X,Y,Z");
   cmd->add_option("--title", options->fields.title, "title block: title")->type_name("TEXT");
   cmd->add_option("--number", options->fields.number, "title block: drawing number")->type_name("TEXT");
   cmd->add_option("--author", options->fields.author, "title block: created by")->type_name("TEXT");

@@ -109,7 +109,9 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
       progress.report("shadows of " + std::to_string(options.shadow_lights.size()) + " light(s)");
       hidden_line::ShadowOptions shadow_options;
       shadow_options.light_views = false;
-      const auto result = hidden_line::cast_shadows(scene, options.shadow_lights, shadow_options);
+      std::optional<hidden_line::ShadowResult> own;
+      if (!options.shadows) own = hidden_line::cast_shadows(scene, options.shadow_lights, shadow_options);
+      const hidden_line::ShadowResult& result = options.shadows ? *options.shadows : *own;
       auto rounded = [&](const clip::Contour<K>& c) {
         std::vector<std::array<double, 2>> points;
         for (const auto& q : c.points) points.push_back({frame.rounded(q.x(), 0), frame.rounded(q.y(), 1)});

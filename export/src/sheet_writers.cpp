@@ -68,6 +68,9 @@ std::string sheet_dxf(const SheetLayout& layout, const SheetSpec& spec) {
   // Smooth lines (thin continuous, ISO 128 01.1): a layer of their own, when a view has any.
   if (std::any_of(layout.views.begin(), layout.views.end(), [](const PlacedView& v) { return has_thin_lines(v.lines.curves); }))
     layers.push_back({"THIN", 7, widths.narrow, "CONTINUOUS"});
+  // Shadows (hlr sheet --sun): solid hatches in the view blocks, as hlr draw writes them.
+  if (std::any_of(layout.views.begin(), layout.views.end(), [](const PlacedView& v) { return !v.lines.shadows.empty(); }))
+    layers.push_back({"SHADOW", 9, widths.narrow, "CONTINUOUS"});
   detail::dxf_layers(dxf, body, layers);
   std::vector<std::string> blocks;
   for (const auto& v : layout.views) blocks.push_back("VIEW_" + upper(v.name));
@@ -82,6 +85,7 @@ std::string sheet_dxf(const SheetLayout& layout, const SheetSpec& spec) {
   for (std::size_t i = 0; i < layout.views.size(); ++i) {
     const PlacedView& v = layout.views[i];
     dxf.writeBlock(body, DL_BlockData(blocks[i], 0, 0.0, 0.0, 0.0));
+    detail::dxf_hatches(dxf, body, v.lines.shadows, "SHADOW");  // below the lines, as hlr draw
     detail::dxf_curves(dxf, body, v.lines.curves, style.hidden,
                        [](int rank, std::uint32_t) { return std::string(rank == 0 ? "VISIBLE" : rank == 1 ? "HIDDEN" : "THIN"); },
                        ltscale);

@@ -150,7 +150,10 @@ class ShadowSampler {
 RasterShadows raster_shadows(const std::vector<Mesh>& meshes, const Light& light, int resolution) {
   if (auto defect = light_defect(light)) throw std::invalid_argument(*defect);
   const std::optional<View> view = light_view(meshes, light);
-  if (!view) throw std::invalid_argument(*point_light_defect(meshes, light));
+  if (!view)
+    throw std::invalid_argument(point_light_defect(meshes, light).value_or(
+        "the raster shadow map takes a point light with the scene on one side of a plane through it (one "
+        "perspective view); a light among the geometry is solved exactly in a cube of views, the map has none"));
   const detail::DepthBuffer map(meshes, *view, resolution);
   const ShadowSampler sampler(meshes, light, map, resolution);
   RasterShadows out;

@@ -12,6 +12,9 @@
 //      hidden fragments are cast shadow, tagged with the faces of the visible fragments over them;
 //      per-face lit areas come from clipping the lit fragments by each face of a consolidated
 //      source in the light view, where faces and fragments share their support lines.
+// A point light among the geometry runs stages 1-3 once per pyramid of its cube (cube_views), the
+// sources of each view cut to its square first; lit pieces, shadows and per-face areas add up
+// over the views (each piece lies in one pyramid).
 // Sources facing away or seen edge-on are in attached shadow: their model-space polygons, built
 // once for all lights (model_sources), are the shadow.
 // shadows_in_view takes the result into another view as surface detail (hlr draw --sun).
@@ -230,17 +233,143 @@ View light_view_along(const Vec3& direction) {
   return v;
 }
 
+// One view of a light: its own view, or one pyramid of the cube around a point light.
+struct LightPyramid {
+  View view;
+  int axis = -1;  // the pyramid (index into kCubeAxes), or -1: the light's one view, unclipped
+};
+
+// The cube around a point light e: six pyramids with apex e, along +X, -X, +Y, -Y, +Z, -Z.
+// Pyramid i holds the points p with s (p - e)_a >= |(p - e)_b|, |(p - e)_c| (axis a, sign s, b and c
+// the other two); the perspective view from e along its axis (light_view_along: up +Z, or +Y for
+// +-Z, so that the view's axes are unit and orthogonal) maps it onto the square [-1, 1]^2 of its
+// image. The pyramids cover space and overlap only on their planes (p - e)_a = +-(p - e)_b, which pass
+// through e: a face with area in one contains e in its plane, is edge-on to the light and cast no
+// shadow of area, so the pyramids' lit and shadow polygons add up to each source exactly once.
+const Vec3 kCubeAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+// A positive lower bound on the depth s (p - e)_a of the points of the scene inside pyramid
+// `axis`, or nothing when no face reaches into it. Each face is clipped by the pyramid's four
+// planes (Sutherland-Hodgman, exact): every corner left lies in the closed pyramid, and the corners
+// of the face's part inside are among them (a non-convex face may add corners on the planes that
+// lie outside it, which only lower the bound). Depth 0 in the closed pyramid is e itself; faces
+// whose plane holds e are left out (edge-on from e: build_sources drops them in every view).
+std::optional<FT> least_depth_in_pyramid(const std::vector<Mesh>& meshes, const Vec3FT& e, int axis) {
+  const int a = axis / 2, b = (a + 1) % 3, c = (a + 2) % 3;
+  const bool negative = axis % 2 == 1;
+  auto depth = [&](const Vec3FT& q) { return negative ? -q[a] : q[a]; };
+  std::optional<FT> least;
+  std::vector<Vec3FT> ring, next;
+  for (const Mesh& mesh : meshes)
+    for (const auto& face : mesh.faces) {
+      ring.clear();
+      for (std::uint32_t v : face) {
+        const Vec3& p = mesh.vertices[v];
+        ring.push_back({FT(p[0]) - e[0], FT(p[1]) - e[1], FT(p[2]) - e[2]});
+      }
+      if (ring.size() < 3 || CGAL::is_zero(dot(newell_normal(mesh, face), ring.front()))) continue;
+      for (int plane = 0; plane < 4 && !ring.empty(); ++plane) {
+        const int other = plane < 2 ? b : c;
+        auto side = [&](const Vec3FT& q) { return plane % 2 ? depth(q) + q[other] : depth(q) - q[other]; };
+        next.clear();
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const Vec3FT& p = ring[i];
+          const Vec3FT& q = ring[(i + 1) % ring.size()];
+          const FT hp = side(p), hq = side(q);
+          if (!CGAL::is_negative(hp)) next.push_back(p);
+          if ((CGAL::is_positive(hp) && CGAL::is_negative(hq)) || (CGAL::is_negative(hp) && CGAL::is_positive(hq))) {
+            const FT t = hp / (hp - hq);
+            next.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), p[2] + t * (q[2] - p[2])});
+          }
+        }
+        ring.swap(next);
+      }
+      for (const Vec3FT& q : ring)
+        if (!least || depth(q) < *least) least = depth(q);
+    }
+  return least;
+}
+
+// The views of the cube around a point light that see something, each with its near plane at a
+// power-of-two fraction of the scene's deepest vertex, strictly before everything in its pyramid
+// (so that the near plane cuts only what lies outside the closed pyramid, which the square cuts
+// away anyway).
+std::vector<LightPyramid> cube_views(const std::vector<Mesh>& meshes, const Vec3& e) {
+  const Vec3FT eye{FT(e[0]), FT(e[1]), FT(e[2])};
+  std::vector<LightPyramid> out;
+  for (int axis = 0; axis < 6; ++axis) {
+    const auto least = least_depth_in_pyramid(meshes, eye, axis);
+    if (!least) continue;
+    View view = light_view_along(kCubeAxes[axis]);
+    view.eye = e;
+    std::optional<FT> deepest;
+    const Vec3FT d{FT(kCubeAxes[axis][0]), FT(kCubeAxes[axis][1]), FT(kCubeAxes[axis][2])};
+    for (const Mesh& mesh : meshes)
+      for (const Vec3& p : mesh.vertices) {
+        const FT w = dot(d, {FT(p[0]) - eye[0], FT(p[1]) - eye[1], FT(p[2]) - eye[2]});
+        if (!deepest || *deepest < w) deepest = w;
+      }
+    double fraction = 0.5;
+    while (fraction > 0 && !(*deepest * FT(fraction) < *least)) fraction /= 2;
+    if (fraction == 0) throw std::invalid_argument("the point light is too close to a face for its cube of views");
+    view.near_fraction = fraction;
+    out.push_back({view, axis});
+  }
+  return out;
+}
+
 class LightSolver {
  public:
   LightSolver(const std::vector<Mesh>& meshes, ModelSources& model, ShadowResult& result, std::size_t light_index,
               std::size_t light_count, const ShadowOptions& options)
       : meshes_(meshes), model_(model), result_(result), k_(light_index), light_count_(light_count), options_(options) {}
 
-  // `view`: the light's view (light_view_along, point_light_view).
-  void run(const Light& light, const View& view) {
+  // Solves one light in its views: the light's one view (light_view_along, point_light_view), or
+  // the pyramids of the cube around a point light (cube_views), each clipped to its square.
+  void run(const Light& light, const std::vector<LightPyramid>& views) {
+    if (light.kind == Light::point) eye_ = Vec3FT{FT(light.vector[0]), FT(light.vector[1]), FT(light.vector[2])};
+    const Vec3& dir = light.vector;
+    const Vec3FT d{FT(dir[0]), FT(dir[1]), FT(dir[2])};
+    // Facing of every model source, and its slot for this light.
+    for (auto& s : model_.sources) {
+      // Negative where the light is on the front side: directional, the rays travel against the
+      // front normal; point, the light lies in front of the plane (eye-based, as in perspective).
+      const int side = eye_ ? -CGAL::sign(dot(s.normal, *eye_) + s.offset) : CGAL::sign(dot(s.normal, d));
+      SourceLight sl;
+      sl.facing = side < 0 ? Facing::toward : side == 0 ? Facing::edge_on : Facing::away;
+      if (sl.facing != Facing::toward)
+        for (const auto& p : s.polygons) sl.shadow.push_back({p, {}});
+      s.lights.push_back(std::move(sl));
+    }
+    start_face_areas();
+    LightView picture;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      if (views.size() > 1)
+        stage_ = "light " + std::to_string(k_ + 1) + " of " + std::to_string(light_count_) + ", view " +
+                 std::to_string(i + 1) + " of " + std::to_string(views.size());
+      else
+        stage_ = "light " + std::to_string(k_ + 1) + " of " + std::to_string(light_count_);
+      solve_view(views[i], picture);
+    }
+    if (options_.light_views) {
+      if (!views.empty() && views.front().axis >= 0) {
+        picture.view = views.front().view;
+        for (const auto& v : views) picture.pyramids.push_back(v.view);
+      }
+      result_.views.push_back(std::move(picture));
+    }
+  }
+
+  // Per face, its lit polygons in model space (union_shadows), or empty when not asked for.
+  std::vector<std::vector<std::vector<clip::Polygon<K>>>> face_lit_uv;
+
+ private:
+  // One view of the light: its sources (clipped to the pyramid's square for a cube view), their
+  // area sort, and the fragments taken back to model space as lit and shadow polygons.
+  void solve_view(const LightPyramid& pyramid, LightView& picture) {
+    const View& view = pyramid.view;
     const ViewFrame<K> frame(view, meshes_);
     const Vec3FT d{FT(view.direction[0]), FT(view.direction[1]), FT(view.direction[2])};
-    if (light.kind == Light::point) eye_ = Vec3FT{FT(light.vector[0]), FT(light.vector[1]), FT(light.vector[2])};
     const Vec3FT up{FT(view.up[0]), FT(view.up[1]), FT(view.up[2])};
     // The axes of ViewFrame (the same formulas), each over its squared length: the inverse map.
     const Vec3FT X = cross(d, up), Y = cross(X, d), Z{-d[0], -d[1], -d[2]};
@@ -250,8 +379,15 @@ class LightSolver {
       inverse_[1][i] = Y[i] / ny;
       inverse_[2][i] = Z[i] / nz;
     }
+    // Line ids and light-view sources are this view's own; lit polygons before this view were
+    // counted by the views before it.
+    crossings_ = {};
+    face_indices_.clear();
+    square_.reset();
+    lit_before_.clear();
+    for (const auto& s : model_.sources) lit_before_.push_back(s.lights[k_].lit.size());
 
-    const std::string name = "light " + std::to_string(k_ + 1) + " of " + std::to_string(light_count_);
+    const std::string& name = stage_;
     options_.progress.check();
     options_.progress.report(name + ": light view");
     auto mark = Clock::now();
@@ -259,6 +395,7 @@ class LightSolver {
     source_options.remove_back_faces = true;
     source_options.consolidate = true;
     sources_ = build_sources<K>(meshes_, frame, source_options);
+    if (pyramid.axis >= 0) clip_sources_to_square();
     result_.times.views += seconds_since(mark);
     options_.progress.check();
     options_.progress.report(name + ": sorting " + std::to_string(sources_.polygons.size()) + " polygons");
@@ -272,17 +409,6 @@ class LightSolver {
     options_.progress.report(name + ": lit and shadow polygons");
     mark = Clock::now();
 
-    // Facing of every model source, and its slot for this light.
-    for (auto& s : model_.sources) {
-      // Negative where the light is on the front side: directional, the rays travel against the
-      // front normal; point, the light lies in front of the plane (eye-based, as in perspective).
-      const int side = eye_ ? -CGAL::sign(dot(s.normal, *eye_) + s.offset) : CGAL::sign(dot(s.normal, d));
-      SourceLight sl;
-      sl.facing = side < 0 ? Facing::toward : side == 0 ? Facing::edge_on : Facing::away;
-      if (sl.facing != Facing::toward)
-        for (const auto& p : s.polygons) sl.shadow.push_back({p, {}});
-      s.lights.push_back(std::move(sl));
-    }
     model_of_.resize(sources_.polygons.size());
     for (std::size_t i = 0; i < sources_.polygons.size(); ++i) {
       const auto& sp = sources_.polygons[i];
@@ -329,15 +455,32 @@ class LightSolver {
         }
       }
     }
-    face_areas();
-    if (options_.light_views) light_view(frame, map);
+    add_face_areas();
+    if (options_.light_views) add_to_picture(frame, map, pyramid.axis, picture);
     result_.times.map_back += seconds_since(mark);
   }
 
-  // Per face, its lit polygons in model space (union_shadows), or empty when not asked for.
-  std::vector<std::vector<std::vector<clip::Polygon<K>>>> face_lit_uv;
-
- private:
+  // A cube view sees only its pyramid: every source is cut to the square [-1, 1]^2 of the image
+  // (exactly, on four auxiliary lines), and what lies outside is left to the other pyramids.
+  // Sources keep their order (a coplanar tie goes to the same one as without the cut).
+  void clip_sources_to_square() {
+    const std::vector<P2> corners{G::point(FT(-1), FT(-1)), G::point(FT(1), FT(-1)), G::point(FT(1), FT(1)),
+                                  G::point(FT(-1), FT(1))};
+    square_ = clip::Polygon<K>{clip::make_contour<K>(corners, sources_.lines), {}};
+    sources_.line_origins.resize(sources_.lines.size());  // auxiliary lines
+    const clip::ClipRegion<K> region(*square_, sources_.lines, &crossings_);
+    std::vector<clip::Polygon<K>> subjects;
+    for (const auto& sp : sources_.polygons) subjects.push_back(sp.polygon);
+    auto parts = clip::clip_list<K>(subjects, region);
+    std::vector<SourcePolygon<K>> kept;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      for (auto& piece : parts[i].inside) {
+        SourcePolygon<K> sp = sources_.polygons[i];
+        sp.polygon = std::move(piece);
+        kept.push_back(std::move(sp));
+      }
+    sources_.polygons = std::move(kept);
+  }
   // A light-view piece of a light-view source, lit or in cast shadow.
   void add_lit(const clip::Polygon<K>& polygon, std::uint32_t area_source) {
     const std::uint32_t m = model_of_[area_source];
@@ -383,8 +526,11 @@ class LightSolver {
     return out;
   }
 
-  // A face of a light-view source as a polygon on the light view's support lines.
-  clip::Polygon<K> face_polygon(std::uint32_t mesh, std::uint32_t f) const {
+  // A face of a light-view source as polygons on the light view's support lines: its image, or in
+  // a cube view its image's part inside the square. A face the near plane cuts is its ring there
+  // (near_plane.hpp); the cut lies outside the pyramid (the near plane is before everything in
+  // it), so the square takes it away, and its edge may go on a line of its own.
+  std::vector<clip::Polygon<K>> face_polygons(std::uint32_t mesh, std::uint32_t f) {
     const auto& face = meshes_[mesh].faces[f];
     const auto& points = sources_.image_points[mesh];
     const auto& edge_lines = sources_.edge_lines[mesh];
@@ -395,22 +541,40 @@ class LightSolver {
       return it->second;
     };
     clip::Contour<K> c;
-    for (std::size_t i = 0; i < face.size(); ++i) {
-      c.points.push_back(points[face[i]]);
-      c.lines.push_back(line_of(face[i], face[(i + 1) % face.size()]));
+    const NearCut<K>& cut = sources_.near_cuts[mesh];
+    if (cut.part(f) == NearCut<K>::Part::cut) {
+      const auto& ring = cut.ring(f);
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        c.points.push_back(points[ring[i].point]);
+        if (ring[i].a != NearCut<K>::kCut) {
+          c.lines.push_back(line_of(ring[i].a, ring[i].b));
+        } else {
+          c.lines.push_back(clip::LineId(sources_.lines.size()));
+          sources_.lines.push_back({points[ring[i].point], points[ring[(i + 1) % ring.size()].point]});
+          sources_.line_origins.resize(sources_.lines.size());  // auxiliary
+        }
+      }
+    } else {
+      for (std::size_t i = 0; i < face.size(); ++i) {
+        c.points.push_back(points[face[i]]);
+        c.lines.push_back(line_of(face[i], face[(i + 1) % face.size()]));
+      }
     }
     if (CGAL::is_negative(clip::twice_signed_area(c))) {
       std::reverse(c.points.begin(), c.points.end());
       std::reverse(c.lines.begin(), c.lines.end());
       std::rotate(c.lines.begin(), c.lines.begin() + 1, c.lines.end());
     }
-    return {std::move(c), {}};
+    clip::Polygon<K> polygon{std::move(c), {}};
+    if (!square_) return {std::move(polygon)};
+    return clip_by(*square_, std::span<const clip::Polygon<K>>(&polygon, 1))[0].inside;
   }
 
   // The faces of a consolidated light-view source as polygons, with a grid of their boxes: made
   // once per source, when `by` or a per-face area first needs them.
   struct FaceIndex {
-    std::vector<clip::Polygon<K>> polygons;  // parallel to the source's faces
+    std::vector<clip::Polygon<K>> polygons;
+    std::vector<std::uint32_t> face_of;  // per polygon: its face, as an index into the source's faces
     detail::LooseGrid grid;
   };
   const FaceIndex& face_index(std::uint32_t area_source) {
@@ -418,12 +582,16 @@ class LightSolver {
     if (it != face_indices_.end()) return *it->second;
     const auto& sp = sources_.polygons[area_source];
     std::vector<clip::Polygon<K>> polygons;
+    std::vector<std::uint32_t> face_of;
     CGAL::Bbox_2 domain;
-    for (std::uint32_t f : sp.faces) {
-      polygons.push_back(face_polygon(sp.mesh, f));
-      domain += detail::box_of(polygons.back());
-    }
-    auto index = std::make_unique<FaceIndex>(FaceIndex{std::move(polygons), detail::LooseGrid(domain, sp.faces.size())});
+    for (std::uint32_t k = 0; k < sp.faces.size(); ++k)
+      for (auto& polygon : face_polygons(sp.mesh, sp.faces[k])) {
+        domain += detail::box_of(polygon);
+        polygons.push_back(std::move(polygon));
+        face_of.push_back(k);
+      }
+    const std::size_t count = polygons.size();
+    auto index = std::make_unique<FaceIndex>(FaceIndex{std::move(polygons), std::move(face_of), detail::LooseGrid(domain, count)});
     for (std::uint32_t k = 0; k < index->polygons.size(); ++k) index->grid.insert(k, detail::box_of(index->polygons[k]));
     return *face_indices_.emplace(area_source, std::move(index)).first->second;
   }
@@ -463,7 +631,7 @@ class LightSolver {
       for (std::uint32_t k : near) {
         const auto parts = clip_by(index.polygons[k], results[i].inside);
         if (std::any_of(parts.begin(), parts.end(), [](const auto& r) { return !r.inside.empty(); }))
-          by.push_back({sp.mesh, sp.faces[k]});
+          by.push_back({sp.mesh, sp.faces[index.face_of[k]]});
       }
     }
     std::sort(by.begin(), by.end());
@@ -472,8 +640,8 @@ class LightSolver {
   }
 
   // Per face: its lit area, from its source's lit fragments (clipped by the face in the light
-  // view where the source has several faces).
-  void face_areas() {
+  // view where the source has several faces), added up over the light's views.
+  void start_face_areas() {
     auto& lit_area = result_.face_lit_area.emplace_back();
     auto& lit_area2 = result_.face_lit_area2.emplace_back();
     for (std::size_t mi = 0; mi < meshes_.size(); ++mi) {
@@ -484,6 +652,10 @@ class LightSolver {
       face_lit_uv.assign(meshes_.size(), {});
       for (std::size_t mi = 0; mi < meshes_.size(); ++mi) face_lit_uv[mi].resize(meshes_[mi].faces.size());
     }
+  }
+  void add_face_areas() {
+    auto& lit_area = result_.face_lit_area.back();
+    auto& lit_area2 = result_.face_lit_area2.back();
     for (std::uint32_t m = 0; m < model_.sources.size(); ++m) {
       const ShadowSource& s = model_.sources[m];
       const SourceLight& sl = s.lights[k_];
@@ -495,7 +667,7 @@ class LightSolver {
         if (options_.union_shadows) face_lit_uv[s.mesh][f].push_back(uv_polygon(p, s));
       };
       if (s.faces.size() == 1) {
-        for (const auto& p : sl.lit) add(s.faces.front(), p);
+        for (std::size_t i = lit_before_[m]; i < sl.lit.size(); ++i) add(s.faces.front(), sl.lit[i]);
         continue;
       }
       // Each lit piece clipped by the faces of its light-view source that it can overlap.
@@ -508,7 +680,7 @@ class LightSolver {
         const std::span<const clip::Polygon<K>> one(&polygon, 1);
         for (std::uint32_t k : near) {
           const auto parts = clip_by(index.polygons[k], one);
-          for (const auto& piece : parts[0].inside) add(faces[k], lift(piece, area_source));
+          for (const auto& piece : parts[0].inside) add(faces[index.face_of[k]], lift(piece, area_source));
         }
       }
     }
@@ -531,13 +703,17 @@ class LightSolver {
     return out;
   }
 
-  void light_view(const ViewFrame<K>& frame, const VisibilityMap<K>& map) {
-    LightView lv;
-    lv.view = frame.view();
-    lv.world_to_view = frame.world_to_view();
+  // The view's visible fragments into the picture. A cube view's square goes to its place in a
+  // 3 x 2 layout (+X, -X, +Y over -Y, +Z, -Z), 2.5 apart.
+  void add_to_picture(const ViewFrame<K>& frame, const VisibilityMap<K>& map, int axis, LightView& picture) {
+    if (picture.polygons.empty() && picture.pyramids.empty()) {
+      picture.view = frame.view();
+      picture.world_to_view = frame.world_to_view();
+    }
+    const double dx = axis < 0 ? 0 : 2.5 * (axis % 3), dy = axis < 0 ? 0 : -2.5 * (axis / 3);
     auto rounded = [&](const clip::Contour<K>& c) {
       std::vector<std::array<double, 2>> out;
-      for (const P2& q : c.points) out.push_back({frame.rounded(q.x(), 0), frame.rounded(q.y(), 1)});
+      for (const P2& q : c.points) out.push_back({frame.rounded(q.x(), 0) + dx, frame.rounded(q.y(), 1) + dy});
       return out;
     };
     for (const auto& v : map.visible) {
@@ -546,9 +722,8 @@ class LightSolver {
       for (const auto& h : v.polygon.holes) p.holes.push_back(rounded(h));
       p.source = model_of_[v.source];
       p.lit = model_.sources[p.source].lights[k_].facing == Facing::toward;
-      lv.polygons.push_back(std::move(p));
+      picture.polygons.push_back(std::move(p));
     }
-    result_.views.push_back(std::move(lv));
   }
 
   const std::vector<Mesh>& meshes_;
@@ -563,6 +738,9 @@ class LightSolver {
   std::vector<std::vector<std::pair<clip::Polygon<K>, std::uint32_t>>> lit_view_;  // per model source: lit pieces
   clip::CrossingCache<K> crossings_;
   std::unordered_map<std::uint32_t, std::unique_ptr<FaceIndex>> face_indices_;
+  std::optional<clip::Polygon<K>> square_;  // a cube view: its pyramid's square [-1, 1]^2
+  std::vector<std::size_t> lit_before_;  // per model source: its lit polygons from earlier views
+  std::string stage_;                    // "light 2 of 7" (", view 3 of 6")
 };
 
 }  // namespace
@@ -656,11 +834,93 @@ std::optional<View> point_light_view(const std::vector<Mesh>& meshes, const Ligh
   return std::nullopt;
 }
 
+namespace {
+
+// A face as a polygon in the plane of the two coordinates other than `axis` (its largest normal
+// component), normalized; nothing for a face without area.
+std::optional<clip::Polygon<K>> face_in_axis_plane(const Mesh& mesh, const std::vector<std::uint32_t>& face, int axis,
+                                                   clip::LineTable<K>& lines) {
+  const auto ax = uv_axes(axis);
+  std::vector<P2> points;
+  for (std::uint32_t v : face) points.push_back(G::point(FT(mesh.vertices[v][ax[0]]), FT(mesh.vertices[v][ax[1]])));
+  clip::Polygon<K> polygon{clip::make_contour<K>(points, lines), {}};
+  if (clip::normalize_polygon(polygon)) return std::nullopt;
+  return polygon;
+}
+
+// Rays from the light for the inside test: rational directions in no plane of a small integer
+// lattice, so that a ray through an edge or a vertex of a model is rare; the first ray that meets
+// no edge, no vertex and no face plane it runs in decides.
+const std::array<int, 3> kProbeDirections[] = {{3, 5, 7},    {-5, 2, 11}, {7, -3, 2},   {2, 9, -5},  {-7, -11, 3},
+                                                {13, -2, -9}, {-3, 8, -13}, {11, 7, 17}, {-17, 5, -4}, {6, -13, 19}};
+
+}  // namespace
+
 std::optional<std::string> point_light_defect(const std::vector<Mesh>& meshes, const Light& light) {
-  if (point_light_view(meshes, light)) return std::nullopt;
-  return "the scene does not lie strictly on one side of any plane through the light that hlr found (the light "
-         "is inside the scene's convex hull, on a face, or just outside it); a light among the geometry is not "
-         "supported";
+  if (auto defect = light_defect(light)) return defect;
+  if (light.kind != Light::point || point_light_view(meshes, light)) return std::nullopt;
+  // Among the geometry the cube serves, unless the light is on a face or inside a closed solid
+  // (whose back faces, removed, would let the light through). Both decided exactly.
+  const Vec3FT e{FT(light.vector[0]), FT(light.vector[1]), FT(light.vector[2])};
+  struct SolidFace {
+    std::uint32_t mesh, component;
+    Vec3FT normal, corner;  // Newell's normal; a corner minus e
+    int axis;
+    clip::Polygon<K> polygon;  // in the plane of the coordinates other than axis
+  };
+  std::vector<SolidFace> solid_faces;
+  clip::LineTable<K> lines;
+  for (std::uint32_t mi = 0; mi < meshes.size(); ++mi) {
+    const Mesh& mesh = meshes[mi];
+    const ComponentSides sides = component_sides(mesh, edge_uses(mesh));
+    for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
+      const Vec3FT n = newell_normal(mesh, mesh.faces[f]);
+      const int axis = largest_axis(n);
+      auto polygon = face_in_axis_plane(mesh, mesh.faces[f], axis, lines);
+      if (!polygon) continue;
+      const Vec3& p0 = mesh.vertices[mesh.faces[f][0]];
+      const Vec3FT q0{FT(p0[0]) - e[0], FT(p0[1]) - e[1], FT(p0[2]) - e[2]};
+      const auto ax = uv_axes(axis);
+      if (CGAL::is_zero(dot(n, q0)) && clip::side_of_polygon<K>(*polygon, G::point(e[ax[0]], e[ax[1]])) >= 0)
+        return "the point light lies on face " + std::to_string(mesh.face_index[f]) + " of " + mesh.file;
+      if (sides.outward[f] != 0) solid_faces.push_back({mi, sides.component[f], n, q0, axis, std::move(*polygon)});
+    }
+  }
+  if (solid_faces.empty()) return std::nullopt;
+  // The parity of a ray's crossings with each closed component: odd inside. A ray that runs in a
+  // face's plane or through a face's boundary proves nothing; the next one is tried.
+  for (const auto& direction : kProbeDirections) {
+    const Vec3FT r{FT(direction[0]), FT(direction[1]), FT(direction[2])};
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> crossings;
+    bool degenerate = false;
+    for (const SolidFace& face : solid_faces) {
+      int& count = crossings[{face.mesh, face.component}];
+      // e + s r on the plane n . (x - e - corner) = 0: s (n . r) = n . corner.
+      const FT along = dot(face.normal, r), offset = dot(face.normal, face.corner);
+      if (CGAL::is_zero(along)) {
+        if (CGAL::is_zero(offset)) degenerate = true;  // the ray runs in the face's plane
+        if (degenerate) break;
+        continue;
+      }
+      const FT s = offset / along;
+      if (!CGAL::is_positive(s)) continue;  // behind the light (or at it: the light is not on the face)
+      const auto ax = uv_axes(face.axis);
+      const int side = clip::side_of_polygon<K>(face.polygon, G::point(e[ax[0]] + s * r[ax[0]], e[ax[1]] + s * r[ax[1]]));
+      if (side == 0) {
+        degenerate = true;
+        break;
+      }
+      count += side > 0;
+    }
+    if (degenerate) continue;
+    for (const auto& [component, count] : crossings)
+      if (count % 2 == 1)
+        return "the point light is inside a closed solid of " + meshes[component.first].file + " (the component of face " +
+               std::to_string(meshes[component.first].face_index[component.second]) + ")";
+    return std::nullopt;
+  }
+  return "hlr could not decide whether the point light is inside a closed solid (every probing ray met an edge); "
+         "move it a little";
 }
 
 std::optional<View> light_view(const std::vector<Mesh>& meshes, const Light& light) {
@@ -669,13 +929,21 @@ std::optional<View> light_view(const std::vector<Mesh>& meshes, const Light& lig
 }
 
 ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Light>& lights, const ShadowOptions& options) {
-  std::vector<View> views;
+  // Per light, its views: one (a sun; a point light with the scene on one side of a plane through
+  // it), or the cube's (a point light among the geometry, or always with PointLightViews::cube).
+  std::vector<std::vector<LightPyramid>> views;
   for (const Light& light : lights) {
     if (auto defect = light_defect(light)) throw std::invalid_argument(*defect);
-    if (auto view = light_view(meshes, light))
-      views.push_back(*view);
-    else
-      throw std::invalid_argument(*point_light_defect(meshes, light));
+    std::optional<View> view;
+    if (light.kind == Light::directional) view = light_view_along(light.vector);
+    else if (options.point_light_views == PointLightViews::automatic) view = point_light_view(meshes, light);
+    if (view) {
+      views.push_back({{*view, -1}});
+      continue;
+    }
+    if (!point_light_view(meshes, light))
+      if (auto defect = point_light_defect(meshes, light)) throw std::invalid_argument(*defect);
+    views.push_back(cube_views(meshes, light.vector));
   }
   const auto start = Clock::now();
   ShadowResult result;

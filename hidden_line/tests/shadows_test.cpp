@@ -92,6 +92,23 @@ const std::vector<AnalyticCase>& analytic_cases() {
       // (0,0) (2,0) (2,8) (-2,8) (-2,4), area 28: ground lit 372.
       {"box_on_ground.off", bulb(2, -4, 4), {{0, 372, 1}, {2, 4, 1}, {3, 4, 1}, {4, 0, 1}, {6, 0, 1}},
        "point light in the plane of a face"},
+      // Point lights among the geometry (the cube of six views; README.md of fixtures/shadows).
+      // From (0, 0, 1) between two boxes: A [-3,-1]x[-1,2]x[0,2] shades the ground where a ray
+      // crosses x = -1 with -1 <= y/(-x) <= 2: int_-10^-5 (10 - x) + int_-5^-1 (-3 x) = 247/2; B
+      // [1,3]x[-1,1]x[0,2] the wedge |y| <= x, x >= 1: 99. Ground lit 400 - 247/2 - 99 = 355/2. The
+      // panel at x = -1/2 (lit, 1) throws y in [0,2], z in [0,2] onto A's +x face: 6 - 4 = 2.
+      {"light_between_boxes.off", bulb(0, 0, 1),
+       {{0, 355, 2}, {1, 0, 1}, {2, 0, 1}, {3, 0, 1}, {4, 2, 1}, {5, 0, 1}, {6, 0, 1}, {7, 0, 1}, {8, 0, 1},
+        {9, 0, 1}, {10, 0, 1}, {11, 0, 1}, {12, 4, 1}, {13, 1, 1}},
+       "point light between two boxes, a panel in front of one"},
+      // From (6, 6, 3) in a room without ceiling: the box [2,4]^2x[0,2] throws its top (scaled 3
+      // from the light) and its footprint onto the floor: the hull's part in x, y >= 0 is
+      // (0,0) (3,0) (4,2) (4,4) (2,4) (0,3), area 14: floor lit 50; onto the walls x = 0 and y = 0
+      // the rectangle [0,3]x[0,3/2]: 32 - 9/2 = 55/2; the far walls and the box's top, +x, +y lit.
+      {"open_room.off", bulb(6, 6, 3),
+       {{0, 50, 1}, {1, 55, 2}, {2, 32, 1}, {3, 55, 2}, {4, 32, 1}, {5, 0, 1}, {6, 4, 1}, {7, 0, 1}, {8, 4, 1},
+        {9, 4, 1}, {10, 0, 1}},
+       "point light in an open room with a box"},
   };
   return cases;
 }
@@ -229,16 +246,32 @@ TEST(ShadowFixtures, BadLightsAreRefused) {
   EXPECT_THROW(cast_shadows(meshes, {sun(0, 0, 0)}), std::invalid_argument);
   EXPECT_THROW(cast_shadows(meshes, {sun(std::nan(""), 0, -1)}), std::invalid_argument);
   EXPECT_THROW(cast_shadows(meshes, {bulb(0, std::numeric_limits<double>::infinity(), 10)}), std::invalid_argument);
-  // Point lights that no single perspective view serves: inside the box, on its top face, on the
-  // ground (in its plane, among its vertices), on an edge of the box (the scene's box centre).
+  // Point lights that nothing serves: inside the box, on its top face, on the ground (in its
+  // plane, among its vertices), on an edge of the box (the scene's box centre); as well in both
+  // ways of solving a point light.
   for (const Light& l : {bulb(1, 1, 1), bulb(1, 1, 2), bulb(5, 5, 0), bulb(0, 0, 1)}) {
     SCOPED_TRACE(std::to_string(l.vector[0]) + "," + std::to_string(l.vector[1]) + "," + std::to_string(l.vector[2]));
     EXPECT_TRUE(hidden_line::point_light_defect(meshes, l).has_value());
     EXPECT_THROW(cast_shadows(meshes, {l}), std::invalid_argument);
+    hidden_line::ShadowOptions cube;
+    cube.point_light_views = hidden_line::PointLightViews::cube;
+    EXPECT_THROW(cast_shadows(meshes, {l}, cube), std::invalid_argument);
   }
-  // Outside: above everything, and beside it.
+  EXPECT_NE(hidden_line::point_light_defect(meshes, bulb(1, 1, 1)).value_or("").find("inside a closed solid"), std::string::npos);
+  EXPECT_NE(hidden_line::point_light_defect(meshes, bulb(1, 1, 2)).value_or("").find("on face 2 of"), std::string::npos);
+  EXPECT_NE(hidden_line::point_light_defect(meshes, bulb(5, 5, 0)).value_or("").find("on face 0 of"), std::string::npos);
+  // Outside: above everything, and beside it; among the geometry (the cube): over the ground
+  // beside the box, below the box's top.
   EXPECT_FALSE(hidden_line::point_light_defect(meshes, bulb(0, 0, 10)).has_value());
   EXPECT_FALSE(hidden_line::point_light_defect(meshes, bulb(30, 1, 1)).has_value());
+  EXPECT_FALSE(hidden_line::point_light_view(meshes, bulb(4, 1, 1)).has_value());
+  EXPECT_FALSE(hidden_line::point_light_defect(meshes, bulb(4, 1, 1)).has_value());
+  // Between the two boxes and the panel: served; inside box A, on the panel, on B's -x face: not.
+  const auto between = load(fixture("light_between_boxes.off"));
+  EXPECT_FALSE(hidden_line::point_light_defect(between, bulb(0, 0, 1)).has_value());
+  EXPECT_NE(hidden_line::point_light_defect(between, bulb(-2, 0, 1)).value_or("").find("inside a closed solid"), std::string::npos);
+  EXPECT_NE(hidden_line::point_light_defect(between, bulb(-0.5, 0.5, 1)).value_or("").find("on face 13 of"), std::string::npos);
+  EXPECT_NE(hidden_line::point_light_defect(between, bulb(1, 0, 1)).value_or("").find("on face 12 of"), std::string::npos);
 }
 
 // The oracle itself: planted errors are found.
@@ -384,6 +417,35 @@ TEST(ShadowFixtures, OracleOnEveryFixture) {
   }
 }
 
+// The cube of views gives a point light the single view's answer, exactly, where both can serve
+// it (the lights around every fixture), and keeps the contract.
+TEST(ShadowFixtures, PointLightCubeGivesTheSingleViewsAnswer) {
+  std::vector<std::string> files;
+  for (const char* dir : {HLR_SHADOW_FIXTURES_DIR, HLR_SCENE_FIXTURES_DIR})
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+      if (e.path().extension() == ".off") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  hidden_line::ShadowOptions cube;
+  cube.point_light_views = hidden_line::PointLightViews::cube;
+  for (const auto& file : files) {
+    SCOPED_TRACE(file);
+    const auto meshes = load(file);
+    std::vector<Light> bulbs = point_lights_around(meshes);
+    if (file.ends_with("box_on_ground.off")) bulbs.insert(bulbs.end(), {bulb(1, 1, 4), bulb(1, -4, 4), bulb(2, -4, 4)});
+    const ShadowResult single = cast_shadows(meshes, bulbs);
+    const ShadowResult six = cast_shadows(meshes, bulbs, cube);
+    for (std::size_t k = 0; k < bulbs.size(); ++k) {
+      EXPECT_TRUE(single.views[k].pyramids.empty());
+      EXPECT_FALSE(six.views[k].pyramids.empty());
+      for (std::size_t m = 0; m < meshes.size(); ++m)
+        for (std::size_t f = 0; f < meshes[m].faces.size(); ++f)
+          EXPECT_EQ(six.face_lit_area2[k][m][f], single.face_lit_area2[k][m][f]) << "light " << k << " face " << f;
+    }
+    const auto errors = check_shadows(meshes, bulbs, six);
+    EXPECT_TRUE(errors.empty()) << joined(errors);
+  }
+}
+
 // The shared scenes (one test per scene through the filter; skipped without ../shared/scenes).
 class ShadowScenes : public ::testing::TestWithParam<std::string> {};
 TEST_P(ShadowScenes, Oracle) {
@@ -412,6 +474,39 @@ std::string scene_test_name(const ::testing::TestParamInfo<std::string>& info) {
 }
 INSTANTIATE_TEST_SUITE_P(Shared, ShadowScenes, ::testing::ValuesIn(scene_names(HLR_SHADOW_SCENES)), scene_test_name);
 INSTANTIATE_TEST_SUITE_P(SharedSoak, ShadowScenes, ::testing::ValuesIn(scene_names(HLR_SHADOW_SOAK_SCENES)),
+                         scene_test_name);
+
+// A shared scene on a ground twice its size, the light beside it at mid-height: among the
+// geometry (no plane through the light has the scene on one side), so solved in the cube.
+class ShadowScenesAmong : public ::testing::TestWithParam<std::string> {};
+TEST_P(ShadowScenesAmong, Oracle) {
+  const std::string path = std::string(HLR_SHARED_SCENES) + "/" + GetParam();
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
+  std::vector<Mesh> meshes = load(path);
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const auto& p : meshes[0].vertices)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  auto grid = [](double v) { return std::round(v * 16) / 16; };
+  Mesh ground;
+  ground.file = "ground";
+  const double g0 = grid(lo[0] - size), g1 = grid(hi[0] + size), h0 = grid(lo[1] - size), h1 = grid(hi[1] + size);
+  ground.vertices = {{g0, h0, lo[2]}, {g1, h0, lo[2]}, {g1, h1, lo[2]}, {g0, h1, lo[2]}};
+  ground.faces = {{0, 1, 2, 3}};
+  ground.face_index = {0};
+  meshes.push_back(ground);
+  const Light light = bulb(grid(hi[0] + size / 8), grid((lo[1] + hi[1]) / 2) + 0.0625, grid((lo[2] + hi[2]) / 2) + 0.03125);
+  ASSERT_FALSE(hidden_line::point_light_view(meshes, light).has_value());
+  ASSERT_FALSE(hidden_line::point_light_defect(meshes, light).has_value());
+  const ShadowResult r = cast_shadows(meshes, {light});
+  EXPECT_FALSE(r.views[0].pyramids.empty());
+  ShadowCheckOptions options;
+  options.max_polygons = 2;
+  const auto errors = check_shadows(meshes, {light}, r, options);
+  EXPECT_TRUE(errors.empty()) << joined(errors);
+}
+INSTANTIATE_TEST_SUITE_P(Shared, ShadowScenesAmong, ::testing::ValuesIn(scene_names(HLR_SHADOW_SCENES)), scene_test_name);
+INSTANTIATE_TEST_SUITE_P(SharedSoak, ShadowScenesAmong, ::testing::ValuesIn(scene_names(HLR_SHADOW_SOAK_SCENES)),
                          scene_test_name);
 
 // ---------------------------------------------------------------------------------------------
@@ -492,6 +587,32 @@ RC_GTEST_PROP(ShadowProperty, PointLightOracleAndAreaIdentity, ()) {
   const ShadowResult r = cast_shadows(meshes, {light});
   const auto errors = check_shadows(meshes, {light}, r);
   if (!errors.empty()) RC_FAIL(joined(errors) + scene_text(meshes, light));
+}
+
+// Random grid-snapped rational point lights among the boxes (inside the scene's box, where most
+// need the cube): those not on a face nor inside a box; the area identity and the oracle hold,
+// and where one view serves too, the cube's lit areas are that view's.
+RC_GTEST_PROP(ShadowProperty, PointLightAmongTheGeometry, ()) {
+  const std::vector<Mesh> meshes = random_scene();
+  const int scale = *rc::gen::element(2, 4, 8);
+  const double x = double(*rc::gen::inRange(-2 * scale, 6 * scale + 1)) / scale;
+  const double y = double(*rc::gen::inRange(-2 * scale, 6 * scale + 1)) / scale;
+  const double z = double(*rc::gen::inRange(1, 6 * scale)) / scale;
+  const Light light = bulb(x, y, z);
+  RC_PRE(!hidden_line::point_light_defect(meshes, light).has_value());
+  const bool one_view = hidden_line::point_light_view(meshes, light).has_value();
+  RC_TAG(one_view ? "one view serves" : "cube only");
+  hidden_line::ShadowOptions cube;
+  cube.point_light_views = hidden_line::PointLightViews::cube;
+  const ShadowResult r = cast_shadows(meshes, {light}, cube);
+  const auto errors = check_shadows(meshes, {light}, r);
+  if (!errors.empty()) RC_FAIL(joined(errors) + scene_text(meshes, light));
+  if (one_view) {
+    const ShadowResult single = cast_shadows(meshes, {light});
+    for (std::size_t m = 0; m < meshes.size(); ++m)
+      for (std::size_t f = 0; f < meshes[m].faces.size(); ++f)
+        RC_ASSERT(single.face_lit_area2[0][m][f] == r.face_lit_area2[0][m][f]);
+  }
 }
 
 }  // namespace

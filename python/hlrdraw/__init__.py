@@ -241,8 +241,8 @@ def surfaces(vertices, faces=None, *, view="iso", direction=None, up=None, kerne
 def shadows(vertices, faces=None, *, sun=None, point_light=None, union=False, threads=0, progress=None):
     """Which part of every face each light reaches, exactly, as `hlr shadows -o OUT.json` finds it:
     the hlr-shadows/1 document as a dict (docs/FORMATS.md). sun=(dx, dy, dz) is a directional light
-    whose rays travel along that direction (--sun), point_light=(x, y, z) a point light outside the
-    scene (--point-light); each may be one light or a list of them, suns first in "lights". At
+    whose rays travel along that direction (--sun), point_light=(x, y, z) a point light (outside the
+    scene or among it, not on a face nor inside a closed solid; --point-light); each may be one light or a list of them, suns first in "lights". At
     least one light is needed. union=True adds every face's shadow over all lights (--union);
     threads and progress as in draw."""
     text = _hlrdraw.shadows(_meshes(vertices, faces), _lights(sun), _lights(point_light), bool(union), int(threads),

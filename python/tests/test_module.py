@@ -165,7 +165,7 @@ def test_draw_with_a_point_light_is_the_programs_svg(tmp_path):
 
 
 def test_bad_lights_raise_one_line(hlr):
-    with pytest.raises(hlrdraw.Error, match=r"^point_light \(1, 1, 1\): .*plane through the light"):
+    with pytest.raises(hlrdraw.Error, match=r"^point_light \(1, 1, 1\): .*inside a closed solid"):
         hlrdraw.shadows(SHADOW_BOX, point_light=(1, 1, 1))
     with pytest.raises(hlrdraw.Error, match=r"^point_light \(1, 1, 1\): "):
         hlrdraw.draw_file(SHADOW_BOX, point_light=(1, 1, 1))

@@ -124,6 +124,98 @@ TEST_F(CliShadows, PointLightWritesJsonCsvAndSvg) {
   EXPECT_NE(svg.find("point1 at (1.0, -4.0, 4.0)"), std::string::npos);
 }
 
+TEST_F(CliShadows, PointLightAmongTheGeometry) {
+  // fixtures/shadows/README.md: the light between two boxes needs the cube of six views.
+  const std::string between = (kShadowFixtures / "light_between_boxes.off").string();
+  const Outcome run = hlr({"shadows", between, "--point-light", "0,0,1", "-o", out("p.json").string(), "-o",
+                           out("p.csv").string(), "-o", out("p.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(outputs(), (std::vector<std::string>{"p.csv", "p.json", "p.svg"}));
+  const json doc = json::parse(slurp(out("p.json")));
+  EXPECT_EQ(doc.at("lights").at(0), json({{"type", "point"}, {"position", {0.0, 0.0, 1.0}}}));
+  EXPECT_EQ(doc.at("sources").at(0).at("faces"), json({0}));
+  EXPECT_EQ(doc.at("sources").at(0).at("lights").at(0).at("lit_area"), 177.5);
+  std::istringstream csv(slurp(out("p.csv")));
+  std::string line;
+  std::getline(csv, line);
+  std::getline(csv, line);
+  EXPECT_EQ(line, "0,0,400.0,177.5,0.44375");
+  EXPECT_NE(slurp(out("p.svg")).find("<g id=\"light-0\">"), std::string::npos);
+  const Outcome draw = hlr({"draw", between, "--view", "iso", "--point-light", "0,0,1", "-o", out("d.svg").string()});
+  ASSERT_EQ(draw.exit_code, 0) << draw.err;
+  EXPECT_NE(slurp(out("d.svg")).find("id=\"shadows\""), std::string::npos);
+  // Inside box A: refused, no file.
+  fs::remove(out("p.json"));
+  fs::remove(out("p.csv"));
+  fs::remove(out("p.svg"));
+  fs::remove(out("d.svg"));
+  expect_failure({"shadows", between, "--point-light", "-2,0,1", "-o", out("x.json").string()}, 2,
+                 "hlr: --point-light -2,0,1: ", "inside a closed solid");
+}
+
+// hlr sheet --sun/--point-light: every view carries the shadows, as hlr draw --view NAME does.
+TEST_F(CliShadows, SheetDrawsTheShadowsOnEveryView) {
+  const std::string between = (kShadowFixtures / "light_between_boxes.off").string();
+  const Outcome run = hlr({"sheet", between, "--views", "front,top,iso", "--point-light", "0,0,1", "--sun", "1,2,-4", "-o",
+                           out("s.svg").string(), "-o", out("s.dxf").string(), "-o", out("s.pdf").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = slurp(out("s.svg"));
+  const std::string dxf = slurp(out("s.dxf"));
+  EXPECT_EQ(slurp(out("s.pdf")).rfind("%PDF", 0), 0u);
+  for (const std::string view : {"front", "top", "iso"}) {
+    SCOPED_TRACE(view);
+    // The view's shadow group lies inside the view's group and holds filled paths, the same areas
+    // hlr draw --view NAME fills.
+    const std::size_t group = svg.find("<g id=\"view-" + view + "\"");
+    const std::size_t shadows = svg.find("<g id=\"view-" + view + "-shadows\"");
+    ASSERT_NE(group, std::string::npos);
+    ASSERT_NE(shadows, std::string::npos);
+    EXPECT_LT(group, shadows);
+    EXPECT_EQ(svg.find("<g id=\"view-", group + 1), shadows);  // no other view's group between them
+    const std::size_t end = svg.find("</g>", shadows);
+    std::size_t sheet_paths = 0;
+    for (std::size_t at = svg.find("<path", shadows); at < end; at = svg.find("<path", at + 1)) ++sheet_paths;
+    const Outcome draw = hlr({"draw", between, "--view", view, "--point-light", "0,0,1", "--sun", "1,2,-4", "-o",
+                              out("d.svg").string(), "-o", out("d.dxf").string()});
+    ASSERT_EQ(draw.exit_code, 0) << draw.err;
+    const std::string drawn = slurp(out("d.svg"));
+    const std::size_t own = drawn.find("<g id=\"shadows\"");
+    ASSERT_NE(own, std::string::npos);
+    std::size_t draw_paths = 0;
+    for (std::size_t at = drawn.find("<path", own); at < drawn.find("</g>", own); at = drawn.find("<path", at + 1)) ++draw_paths;
+    EXPECT_GT(sheet_paths, 0u);
+    EXPECT_EQ(sheet_paths, draw_paths);
+    // DXF: the view's block has HATCH entities on SHADOW, as many as the drawing's.
+    std::string upper = view;
+    for (char& ch : upper) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+    const std::size_t block = dxf.find("\nVIEW_" + upper + "\n", dxf.find("\nBLOCKS\n"));
+    ASSERT_NE(block, std::string::npos);
+    const std::size_t block_end = dxf.find("ENDBLK", block);
+    std::size_t hatches = 0;
+    for (std::size_t at = dxf.find("\nHATCH\n", block); at < block_end; at = dxf.find("\nHATCH\n", at + 1)) ++hatches;
+    const std::string drawn_dxf = slurp(out("d.dxf"));
+    std::size_t drawn_hatches = 0;
+    for (std::size_t at = drawn_dxf.find("\nHATCH\n"); at != std::string::npos; at = drawn_dxf.find("\nHATCH\n", at + 1))
+      ++drawn_hatches;
+    EXPECT_EQ(hatches, drawn_hatches);
+    EXPECT_GT(hatches, 0u);
+  }
+  EXPECT_NE(dxf.find("\nSHADOW\n"), std::string::npos);
+  // Without lights the sheet has no shadows and no SHADOW layer.
+  const Outcome plain = hlr({"sheet", between, "--views", "front", "-o", out("p.dxf").string(), "-o", out("p.svg").string()});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(slurp(out("p.dxf")).find("\nSHADOW\n"), std::string::npos);
+  EXPECT_EQ(slurp(out("p.svg")).find("-shadows\""), std::string::npos);
+}
+
+TEST_F(CliShadows, SheetShadowMistakes) {
+  const std::string o = out("s.svg").string();
+  expect_failure({"sheet", box(), "--point-light", "1,1,1", "-o", o}, 2, "hlr: --point-light 1,1,1: ", "inside a closed solid");
+  expect_failure({"sheet", box(), "--sun", "0,0,0", "-o", o}, 2, "hlr: --sun 0,0,0: ", "zero");
+  expect_failure({"sheet", box(), "--sun", "1,2,-4", "--kernel", "epick", "-o", o}, 2, "hlr: --sun 1,2,-4: ",
+                 "exact path only");
+}
+
 TEST_F(CliShadows, CsvIsTheGoldenFile) {
   // Regenerate: hlr shadows fixtures/shadows/two_boxes.off --sun -1,0,-1 --sun 1,2,-4 --sun 0,0,-1
   //   --union -o tests/golden/shadows/two_boxes.csv (and review the diff).
@@ -161,14 +253,15 @@ TEST_F(CliShadows, BadInputIsOneLineAndNoFile) {
   expect_failure({"shadows", box(), "--sun", "1,nan,-1", "-o", o}, 2, "hlr: --sun 1,nan,-1: ", "not finite");
   expect_failure({"shadows", box(), "--sun", "1,2", "-o", o}, 2, "hlr: --sun 1,2: ");
   expect_failure({"shadows", box(), "-o", o}, 2, "hlr: ", "no light");
-  // Point lights: non-finite, malformed, and where one perspective view cannot serve: inside the
-  // box, on its top face, in the ground's plane among its corners.
+  // Point lights: non-finite, malformed, and where nothing can serve: inside the box, on its top
+  // face, on the ground.
   expect_failure({"shadows", box(), "--point-light", "0,inf,10", "-o", o}, 2, "hlr: --point-light 0,inf,10: ",
                  "not finite");
   expect_failure({"shadows", box(), "--point-light", "0,10", "-o", o}, 2, "hlr: --point-light 0,10: ");
-  for (const std::string inside : {"1,1,1", "1,1,2", "5,5,0"})
-    expect_failure({"shadows", box(), "--sun", "1,2,-4", "--point-light", inside, "-o", o, "-o", out("x.svg").string()},
-                   2, "hlr: --point-light " + inside + ": ", "plane through the light");
+  for (const auto& [light, why] : std::vector<std::pair<std::string, std::string>>{
+           {"1,1,1", "inside a closed solid of " + box()}, {"1,1,2", "on face 2 of " + box()}, {"5,5,0", "on face 0 of " + box()}})
+    expect_failure({"shadows", box(), "--sun", "1,2,-4", "--point-light", light, "-o", o, "-o", out("x.svg").string()},
+                   2, "hlr: --point-light " + light + ": ", why);
   expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "-o", o}, 2, "hlr: --sun-at", "--site");
   expect_failure({"shadows", box(), "--sun-at", "2026-06-21T09:00", "--site", "91,0", "-o", o}, 2, "hlr: --site 91,0: ",
                  "latitude");
@@ -252,7 +345,7 @@ TEST_F(CliShadows, DrawSunMistakes) {
   expect_failure({"draw", box(), "--view", "iso", "--sun", "1,2,-4", "--kernel", "epick", "-o", out("x.svg").string()},
                  2, "hlr: --sun 1,2,-4: ", "exact path only");
   expect_failure({"draw", box(), "--view", "iso", "--point-light", "1,1,1", "-o", out("x.svg").string()}, 2,
-                 "hlr: --point-light 1,1,1: ", "plane through the light");
+                 "hlr: --point-light 1,1,1: ", "inside a closed solid");
   expect_failure({"draw", box(), "--view", "iso", "--point-light", "1,-4,4", "--raster", "64", "-o",
                   out("x.svg").string()},
                  2, "hlr: --point-light 1,-4,4: ", "exact path only");
@@ -300,7 +393,9 @@ TEST_F(CliShadows, CheckShadowMistakes) {
   const std::string o = out("c.json").string();
   expect_failure({"check", box(), "--sun", "0,0,0", "--json", o}, 2, "hlr: --sun 0,0,0: ", "zero");
   expect_failure({"check", box(), "--point-light", "1,1,1", "--json", o}, 2, "hlr: --point-light 1,1,1: ",
-                 "plane through the light");
+                 "inside a closed solid");
+  expect_failure({"check", (kShadowFixtures / "light_between_boxes.off").string(), "--point-light", "0,0,1", "--json", o},
+                 2, "hlr: --point-light 0,0,1: ", "among the geometry");
   expect_failure({"check", box(), "--sun", "1,2,-4", "--view", "top", "--json", o}, 2, "hlr: --sun 1,2,-4: ", "no view");
   expect_failure({"check", box(), "--sun", "1,2,-4", "--kernels", "epick", "--json", o}, 2, "hlr: --kernels: ");
   expect_failure({"check", box(), "--sun", "1,2,-4", "--diff", out("c.png").string()}, 2, "hlr: --diff: ");

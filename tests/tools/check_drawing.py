@@ -9,7 +9,8 @@
          layers. A sheet of hlr sheet (blocks VIEW_*) has layers VISIBLE, HIDDEN, CENTER and BORDER,
          in model space only BORDER entities and inserts of the view blocks, and in the blocks only
          VISIBLE, HIDDEN and CENTER entities.
-         A drawing with shadows (hlr draw --sun) also has layer SHADOW with solid HATCH entities only.
+         A drawing with shadows (hlr draw --sun) also has layer SHADOW with solid HATCH entities only
+         (a sheet with shadows, hlr sheet --sun: in its view blocks).
   .svg   parsed with xml.etree (root <svg>, size in mm, every path and circle of the visible and
          hidden groups inside a part group <g id="part-NAME-visible|hidden" class="part-NAME">, or in
          a sheet inside a view group <g id="view-NAME">, ids unique) and rendered with rsvg-convert
@@ -142,6 +143,16 @@ def check_dxf_sheet(path, doc, blocks, auditor, audit):
     for name in sorted(wanted):
         require(doc.layers.has_entry(name), f"layer {name} missing")
     wanted |= thin_layers(doc, ["THIN"])
+    # hlr sheet --sun: the shadows, solid HATCH entities on layer SHADOW in the view blocks only.
+    hatches = 0
+    if doc.layers.has_entry("SHADOW"):
+        wanted |= {"SHADOW"}
+        for name in blocks:
+            on_shadow = doc.blocks.get(name).query('*[layer=="SHADOW"]')
+            require(all(e.dxftype() == "HATCH" for e in on_shadow), f"entities other than HATCH on layer SHADOW in {name}")
+            require(all(e.dxf.solid_fill == 1 for e in on_shadow), f"a HATCH on layer SHADOW in {name} is not solid")
+            hatches += len(on_shadow)
+        require(hatches > 0, "layer SHADOW without a HATCH in any view block")
     extra = {layer.dxf.name for layer in doc.layers if layer.dxf.name.lower() != "defpoints"} - wanted - {"0"}
     require(not extra, f"unexpected layers {sorted(extra)}")
     dashed_pattern(doc, "HIDDEN")
@@ -155,13 +166,13 @@ def check_dxf_sheet(path, doc, blocks, auditor, audit):
     for name in blocks:
         block = doc.blocks.get(name)
         layers = {e.dxf.layer for e in block}
-        require(layers <= {"VISIBLE", "HIDDEN", "CENTER", "THIN"} & wanted, f"block {name} has entities on {sorted(layers)}")
+        require(layers <= {"VISIBLE", "HIDDEN", "CENTER", "THIN", "SHADOW"} & wanted, f"block {name} has entities on {sorted(layers)}")
         circles += len(block.query("CIRCLE"))
         arcs += len(block.query("ARC"))
     fixes = len(auditor.fixes) + len(audit.fixes)
     border = len(msp) - len(inserts)
     return (f"sheet of {len(blocks)} view blocks ({', '.join(blocks)}), {circles} circles, {arcs} arcs, "
-            f"{border} border entities, ezdxf audit: 0 errors, {fixes} fixes")
+            f"{hatches} shadow hatches, {border} border entities, ezdxf audit: 0 errors, {fixes} fixes")
 
 
 def render_dxf(path):

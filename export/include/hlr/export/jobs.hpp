@@ -40,6 +40,9 @@ struct DrawOptions {
   // Shadows as surface detail (LineDrawing::shadows): the shadow areas of these lights on the
   // visible faces. Exact kernel only (std::invalid_argument otherwise); draw_lines only.
   std::vector<hidden_line::Light> shadow_lights;
+  // The shadows of shadow_lights already solved for this scene (hidden_line::cast_shadows), or
+  // null: they are solved here. Several views of one scene (hlr sheet) solve each light once.
+  const hidden_line::ShadowResult* shadows = nullptr;
   // Per mesh, per face: faces no eye of the view can see (hidden_line::fuzzy_cull), left out of
   // the area sort, or null. The exact kernel only (the others ignore it): there the drawing is the
   // same with them and without them.

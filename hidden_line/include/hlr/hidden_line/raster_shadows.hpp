@@ -33,7 +33,8 @@ struct RasterShadows {
 
 // The shadow map of one light at `resolution` pixels (16..8192) and every face sampled against
 // it. Throws std::invalid_argument for a resolution outside that range, a light with a defect or
-// a point light without a light view (point_light_defect).
+// a point light without a light view (point_light_defect, or a light among the geometry: the map
+// has no cube of views).
 RasterShadows raster_shadows(const std::vector<Mesh>& meshes, const Light& light, int resolution);
 
 }  // namespace hlr::hidden_line

@@ -11,9 +11,15 @@
 // For a point light at e the light view is the perspective view from e (view.hpp): a light-view
 // point (u, v) on a source whose light-view plane is s = a u + b v + c is the model point
 // p = e + (u X/|X|² + v Y/|Y|² + d/|d|²) / s, rational again. One perspective view sees one half
-// space: a point light is accepted when every vertex of the scene lies strictly in front of a plane
-// through it (point_light_view chooses it, point_light_defect says when none was found); a light
-// among the geometry (a bulb in a room) is refused, not split into several views.
+// space: when every vertex of the scene lies strictly in front of a plane through the light
+// (point_light_view chooses it) that view serves. A light among the geometry (a bulb in a room)
+// is solved in the cube around it: six perspective views along ±X, ±Y, ±Z, each seeing only its
+// pyramid (the points p with |(p − e)_b| ≤ s (p − e)_a for the other two coordinates b), which is
+// the square [−1, 1]² of its image. Every view's sources are cut exactly to that square (its near
+// plane lies before everything in the pyramid, so the cut is the pyramid's planes); rays from the
+// light inside a pyramid meet only what lies inside it, so each pyramid is solved on its own and
+// the pieces of a source from the six add up to it. A light on a face or inside a closed solid has
+// no answer (point_light_defect).
 //
 //   lit     the visible fragments of sources that face the light, and the parts of hidden
 //           fragments hidden only by a coplanar tie: where the visible fragment over them lies
@@ -58,13 +64,17 @@ std::optional<std::string> light_defect(const Light& light);
 // +Y, then from the light toward the nearest point of the vertices' convex hull (searched in
 // double, up to 64 Frank-Wolfe steps, each candidate tested exactly). Its near plane lies at or
 // before the nearest vertex, so nothing is clipped. Nothing when no direction qualifies (the light
-// inside the convex hull, on a face, or outside it by too little for the search); then
-// point_light_defect says so.
+// inside the convex hull, on a face, or outside it by too little for the search); cast_shadows
+// then solves the light in its cube of views.
 std::optional<View> point_light_view(const std::vector<Mesh>& meshes, const Light& light);
+// Why cast_shadows cannot solve this light, or nothing: light_defect, or a point light without a
+// point_light_view that lies on a face (in its plane, inside it or on its boundary) or inside a
+// closed solid (odd crossings of a ray from it with a closed component), both decided exactly.
 std::optional<std::string> point_light_defect(const std::vector<Mesh>& meshes, const Light& light);
 // The view from any light: a directional light's orthographic view looking along its direction
-// (up +Z, or +Y when it is vertical), a point light's point_light_view (nothing when it has none).
-// cast_shadows solves the scene in it; the raster shadow map (raster_shadows.hpp) renders it.
+// (up +Z, or +Y when it is vertical), a point light's point_light_view (nothing when it has none:
+// the light is among the geometry). cast_shadows solves the scene in it; the raster shadow map
+// (raster_shadows.hpp) renders it.
 std::optional<View> light_view(const std::vector<Mesh>& meshes, const Light& light);
 
 using ShadowFT = ExactKernel::FT;
@@ -116,10 +126,14 @@ struct LightViewPolygon {
   bool lit = false;
   std::uint32_t source = 0;  // index into ShadowResult::sources
 };
+// A point light solved in its cube: `pyramids` holds the views of the pyramids that see something
+// (`view` and world_to_view are the first's), and `polygons` their squares side by side, pyramid
+// i of +X, −X, +Y, −Y, +Z, −Z shifted by (2.5 (i mod 3), −2.5 floor(i / 3)).
 struct LightView {
   View view;
   std::array<std::array<double, 4>, 4> world_to_view{};
   std::vector<LightViewPolygon> polygons;
+  std::vector<View> pyramids;  // empty: one view
 };
 
 struct ShadowTimes {
@@ -131,8 +145,14 @@ struct ShadowTimes {
   double total = 0;
 };
 
+// How a point light is solved: its one view where the scene lies on one side of a plane through
+// it, else the cube (automatic); or the cube always (the same lit and shadow areas: tests and
+// benchmarks compare them).
+enum class PointLightViews { automatic, cube };
+
 struct ShadowOptions {
   AreaSortOptions sort;
+  PointLightViews point_light_views = PointLightViews::automatic;
   bool light_views = true;     // fill ShadowResult::views
   // Also the union of every face's shadows over all lights (a sun study's "shadow over the day"):
   // ShadowResult::face_union_shadow_area.

@@ -53,6 +53,9 @@ struct FuzzyCull {
   std::vector<std::vector<bool>> culled;  // per mesh, per face: hidden from every eye of the group
   std::size_t patches = 0;                // faces of the scene
   std::size_t culled_faces = 0;
+  // Of those, the back faces of closed components (as seen from all of B): every view removes
+  // them anyway (but one whose near plane cuts their component), so culling them saves nothing.
+  std::size_t culled_back_faces = 0;
   std::size_t occluders = 0, regions = 0;  // faces and regions that went into the depth buffer
   double seconds = 0;
 };

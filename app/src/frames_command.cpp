@@ -1,5 +1,5 @@
 // `hlr frames MESH... (--eyes FILE | --orbit N [--elevation DEG] [--distance D]) [--target X,Y,Z]
-//             [--up X,Y,Z] [--near F] [--cull fuzzy|none] -o DIR/frame_%03d.svg [-o ...]`
+//             [--up X,Y,Z] [--near F] [--cull fuzzy|none] [--cull-report] -o DIR/frame_%03d.svg [-o ...]`
 //
 // One perspective drawing per eye, each the drawing `hlr draw --eye E --target T` makes, written
 // under names numbered from 0 and laid out at one scale about one centre, so that they play as an
@@ -38,6 +38,7 @@ struct FramesCommandOptions {
   std::vector<double> target, up;
   double near = 0;
   std::string cull = "fuzzy";
+  bool cull_report = false;
   std::string kernel = "exact";
   int raster = 0;
   std::string dash = "arc";
@@ -208,6 +209,7 @@ int run(const FramesCommandOptions& options) {
   job.draw.kernel = kind;
   job.draw.progress = run.progress();
   job.cull = options.cull == "none" ? exporter::CullMode::none : exporter::CullMode::fuzzy;
+  job.cull_report = options.cull_report;
   job.raster = options.raster;
   exporter::FrameSet set = exporter::draw_frames(scene, views, job);
   const double solved = seconds_since(start);
@@ -263,7 +265,13 @@ int run(const FramesCommandOptions& options) {
     const auto& group = set.groups[g];
     if (group.culled == 0 && set.groups.size() > 8) continue;
     std::cout << "  group " << g << ": frames " << group.first << " to " << group.first + group.count - 1 << ", "
-              << group.culled << " of " << group.patches << " faces culled (fuzzy pass " << group.fuzzy_seconds << " s)\n";
+              << group.culled << " of " << group.patches << " faces culled";
+    if (group.parts > 1) std::cout << " (the most of its " << group.parts << " parts)";
+    std::cout << "; fuzzy pass" << (group.fuzzy_passes == 1 ? " " : "es ") << group.fuzzy_seconds << " s, frames "
+              << group.solve_seconds << " s";
+    if (const auto saved = group.saved_seconds())
+      std::cout << ", without culling " << *group.unculled_seconds << " s: saved " << *saved << " s";
+    std::cout << '\n';
   }
   if (scale > 0) std::cout << "  sheets at one scale, " << exporter::scale_label(scale / style->unit_mm) << " of the image plane\n";
   std::cout << "  outputs written in " << written << " s (" << solved + written << " s in all)\n";
@@ -319,6 +327,9 @@ Subcommand add_frames_command(CLI::App& parent) {
       ->check(CLI::IsMember({"fuzzy", "none"}))
       ->capture_default_str()
       ->type_name("MODE");
+  cmd->add_flag("--cull-report", options->cull_report,
+                "solve every frame a second time without culling and report the time the culling saved "
+                "(stats.cull.unculled_seconds, group_saved_seconds; the run takes about twice as long)");
   add_line_options(*cmd, options->lines);
   add_style_options(*cmd, options->style);
   cmd->add_option("--raster", options->raster,

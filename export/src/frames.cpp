@@ -5,6 +5,7 @@
 #include "paint.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -85,6 +86,50 @@ std::vector<FrameGroup> group_eyes(const std::vector<View>& views, double extent
   return groups;
 }
 
+std::vector<CullPart> cull_parts(const Scene& scene, const std::vector<View>& views, std::vector<std::size_t> frames,
+                                 const hidden_line::FuzzyOptions& options, StopToken stop, FrameGroup& group) {
+  // One pass over the eyes `frames`.
+  auto pass = [&](const std::vector<std::size_t>& eyes) {
+    std::vector<View> members;
+    for (std::size_t i : eyes) members.push_back(views[i]);
+    hidden_line::FuzzyCull cull = hidden_line::fuzzy_cull(scene.meshes, members, options, stop);
+    ++group.fuzzy_passes;
+    group.fuzzy_seconds += cull.seconds;
+    group.patches = cull.patches;
+    CullPart part{eyes, cull.culled_faces, cull.culled_faces - cull.culled_back_faces, {}};
+    if (cull.culled_faces > 0) part.faces = std::move(cull.culled);
+    return part;
+  };
+  // The halves of `eyes` on either side of the middle of their box's longest axis (both non-empty
+  // unless every eye is the same point).
+  auto halves = [&](const std::vector<std::size_t>& eyes) {
+    Vec3 lo = *views[eyes.front()].eye, hi = lo;
+    for (std::size_t i : eyes)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], (*views[i].eye)[k]), hi[k] = std::max(hi[k], (*views[i].eye)[k]);
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+    const double middle = lo[axis] + (hi[axis] - lo[axis]) / 2;
+    std::array<std::vector<std::size_t>, 2> out;
+    for (std::size_t i : eyes) out[(*views[i].eye)[axis] > middle].push_back(i);
+    return out;
+  };
+  // Once: the passes cost about what a frame's area sort saves, and a scene where nothing is
+  // hidden would pay one per eye for deeper splits (the rooms of BENCHMARKS.md: 7 passes for 5
+  // eyes, 0.9 s against 0.1 s saved).
+  std::vector<CullPart> parts;
+  CullPart whole = pass(frames);
+  const auto [a, b] = whole.useful > 0 || frames.size() < 2 ? std::array<std::vector<std::size_t>, 2>{} : halves(frames);
+  if (a.empty() || b.empty()) {
+    parts.push_back(std::move(whole));
+  } else {
+    parts.push_back(pass(a));
+    parts.push_back(pass(b));
+  }
+  std::sort(parts.begin(), parts.end(), [](const CullPart& x, const CullPart& y) { return x.frames < y.frames; });
+  return parts;
+}
+
 FrameSet draw_frames(const Scene& scene, const std::vector<View>& views, const FramesOptions& options,
                      const SceneIntersections* shared) {
   std::unique_ptr<SceneIntersections> own;
@@ -93,37 +138,55 @@ FrameSet draw_frames(const Scene& scene, const std::vector<View>& views, const F
   const double extent = options.group_extent > 0 ? options.group_extent : scene_diagonal(scene) / 10;
   FrameSet out;
   out.groups = group_eyes(views, extent);
+  out.frames.resize(views.size());
+  if (options.raster > 0) out.rasters.resize(views.size());
   // The culled faces change no drawing of the exact kernel, and the others ignore them.
   const bool cull = options.cull == CullMode::fuzzy && options.raster == 0 && options.draw.kernel == KernelKind::exact;
   for (std::size_t g = 0; g < out.groups.size(); ++g) {
     FrameGroup& group = out.groups[g];
-    const std::vector<View> members(views.begin() + std::ptrdiff_t(group.first),
-                                    views.begin() + std::ptrdiff_t(group.first + group.count));
-    std::optional<hidden_line::FuzzyCull> culled;
     group.patches = scene.input.faces;
+    std::vector<std::size_t> frames(group.count);
+    for (std::size_t i = 0; i < group.count; ++i) frames[i] = group.first + i;
+    std::vector<CullPart> parts;
     if (cull) {
       options.draw.progress.check();
       options.draw.progress.report("fuzzy culling for frames " + std::to_string(group.first + 1) + " to " +
                                    std::to_string(group.first + group.count));
-      culled = hidden_line::fuzzy_cull(scene.meshes, members, options.fuzzy, options.draw.progress.stop);
-      group.patches = culled->patches;
-      group.culled = culled->culled_faces;
-      group.fuzzy_seconds = culled->seconds;
+      parts = cull_parts(scene, views, frames, options.fuzzy, options.draw.progress.stop, group);
+    } else {
+      parts.push_back(CullPart{frames, 0, 0, {}});
     }
-    for (std::size_t i = group.first; i < group.first + group.count; ++i) {
-      options.draw.progress.check();
-      options.draw.progress.report("frame " + std::to_string(i + 1) + " of " + std::to_string(views.size()));
-      DrawOptions draw = options.draw;
-      draw.free_at_exit = false;  // a frame's solution goes before the next is made
-      if (culled && culled->culled_faces > 0) draw.culled_faces = &culled->culled;
-      if (options.raster > 0) {
-        RasterRun run = draw_raster(scene, views[i], options.raster, draw, &intersections);
-        out.frames.push_back(std::move(run.drawing));
-        out.rasters.push_back(std::move(run.raster));
-      } else {
-        out.frames.push_back(draw_lines(scene, views[i], draw, &intersections));
+    group.parts = parts.size();
+    for (const CullPart& part : parts) group.culled = std::max(group.culled, part.culled);
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      for (std::size_t i : parts[p].frames) {
+        options.draw.progress.check();
+        options.draw.progress.report("frame " + std::to_string(i + 1) + " of " + std::to_string(views.size()));
+        DrawOptions draw = options.draw;
+        draw.free_at_exit = false;  // a frame's solution goes before the next is made
+        if (parts[p].culled > 0) draw.culled_faces = &parts[p].faces;
+        LineDrawing& frame = out.frames[i];
+        if (options.raster > 0) {
+          RasterRun run = draw_raster(scene, views[i], options.raster, draw, &intersections);
+          frame = std::move(run.drawing);
+          out.rasters[i] = std::move(run.raster);
+        } else {
+          frame = draw_lines(scene, views[i], draw, &intersections);
+        }
+        group.solve_seconds += frame.times.total + frame.times.write;  // as its stats.seconds
+        frame.cull = LineDrawing::CullCounts{g, p, parts.size(), group.patches, parts[p].culled, 0, {}, {}};
+        if (cull && options.cull_report) {
+          options.draw.progress.report("frame " + std::to_string(i + 1) + " of " + std::to_string(views.size()) +
+                                       " without culling (--cull-report)");
+          draw.culled_faces = nullptr;
+          const StageTimes unculled = draw_lines(scene, views[i], draw, &intersections).times;
+          frame.cull->unculled_seconds = unculled.total + unculled.write;
+          group.unculled_seconds = group.unculled_seconds.value_or(0) + *frame.cull->unculled_seconds;
+        }
       }
-      out.frames.back().cull = LineDrawing::CullCounts{g, group.patches, group.culled, group.fuzzy_seconds};
+    for (std::size_t i = group.first; i < group.first + group.count; ++i) {
+      out.frames[i].cull->fuzzy_seconds = group.fuzzy_seconds;
+      out.frames[i].cull->group_saved_seconds = group.saved_seconds();
     }
   }
   return out;

@@ -137,11 +137,16 @@ json stats_json(const LineDrawing& drawing, double write) {
     stats["circles"] = drawing.curves->circles;
     stats["arcs"] = drawing.curves->arcs;
   }
-  if (drawing.cull)
+  if (drawing.cull) {
     stats["cull"] = {{"group", drawing.cull->group},
+                     {"part", drawing.cull->part},
+                     {"parts", drawing.cull->parts},
                      {"patches", drawing.cull->patches},
                      {"culled", drawing.cull->culled},
                      {"fuzzy_seconds", drawing.cull->fuzzy_seconds}};
+    if (drawing.cull->unculled_seconds) stats["cull"]["unculled_seconds"] = *drawing.cull->unculled_seconds;
+    if (drawing.cull->group_saved_seconds) stats["cull"]["group_saved_seconds"] = *drawing.cull->group_saved_seconds;
+  }
   return stats;
 }
 

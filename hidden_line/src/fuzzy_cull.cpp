@@ -108,6 +108,7 @@ struct MeshFacts {
   std::vector<EdgeUse> uses;
   std::vector<std::int8_t> side;  // per face: +1 or -1 when B lies strictly on that side of it
   std::vector<bool> occluder;     // per face: kept by every view from B, in front of every near plane
+  std::vector<bool> back;         // per face: a back face of a closed component from all of B
 };
 
 MeshFacts mesh_facts(const Mesh& mesh, const Box& box, const std::vector<bool>& deep_vertex) {
@@ -117,6 +118,7 @@ MeshFacts mesh_facts(const Mesh& mesh, const Box& box, const std::vector<bool>& 
   const std::size_t nf = mesh.faces.size();
   facts.side.assign(nf, 0);
   facts.occluder.assign(nf, false);
+  facts.back.assign(nf, false);
   auto point = [&](std::uint32_t v) { return IK::Point_3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]); };
   std::array<IK::Point_3, 8> corners;
   for (int c = 0; c < 8; ++c) {
@@ -147,6 +149,7 @@ MeshFacts mesh_facts(const Mesh& mesh, const Box& box, const std::vector<bool>& 
     // counts as turned outward): only faces that every view keeps can hide anything.
     const int outward = sides.outward[f];
     const bool kept = outward == 0 || outward == side;
+    facts.back[f] = !kept;
     bool deep = true;
     for (std::uint32_t v : face) deep = deep && deep_vertex[v];
     facts.occluder[f] = kept && deep;
@@ -336,6 +339,7 @@ FuzzyCull fuzzy_cull(const std::vector<Mesh>& meshes, const std::vector<View>& v
           if (hidden) {
             out.culled[m][f] = true;
             ++out.culled_faces;
+            out.culled_back_faces += facts[m].back[f];
           }
         }
       }

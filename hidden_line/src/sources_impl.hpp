@@ -8,6 +8,7 @@
 // everything after it is decided in view space on kernel K.
 #pragma once
 
+#include <hlr/clipper/area_sign.hpp>
 #include <hlr/hidden_line/visibility.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
 #include <hlr/kernel/near_plane.hpp>
@@ -111,28 +112,37 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       return edge_line[static_cast<std::size_t>(it - topo.uses.begin())];
     };
 
+    // Culled faces (fuzzy_cull.hpp) are hidden strictly, from every point of their closure, by
+    // faces that the view keeps: they are left out before anything is computed for them, so that
+    // the view spends nothing on them (their facing, their part of a coplanar group's merge, the
+    // area sort). What is left covers the same points at the same depths where anything is seen.
+    const std::vector<bool>* culled = options.culled ? &(*options.culled)[mi] : nullptr;
+    auto is_culled = [&](std::uint32_t f) { return culled && (*culled)[f]; };
+
     // Facing: the sign of the projected area (+1 toward the viewer).
     std::vector<int> facing(nf);
     for (std::uint32_t f = 0; f < nf; ++f) {
       options.stop.check_every(polls, 4096);
-      if (cut.part(f) == Part::behind) continue;
+      if (cut.part(f) == Part::behind || is_culled(f)) continue;
       const auto& face = corners(f);
       if (face.size() == 3) {
         facing[f] = G::orientation(p2[face[0]], p2[face[1]], p2[face[2]]);
       } else {
         clip::Contour<K> c;
         for (std::uint32_t v : face) c.points.push_back(p2[v]);
-        facing[f] = G::sign(clip::twice_signed_area(c));
+        facing[f] = clip::area_sign(c);
       }
     }
     std::vector<bool> keep(nf);
     // A component that the near plane cuts open shows its inside through the cut: its back faces
     // stay.
     const bool remove_back_faces = options.remove_back_faces && !cut.clipped();
-    auto edge_on = [&](std::uint32_t f) { return facing[f] == 0 && cut.part(f) != Part::behind; };
+    auto edge_on = [&](std::uint32_t f) { return facing[f] == 0 && cut.part(f) != Part::behind && !is_culled(f); };
     for (std::uint32_t f = 0; f < nf; ++f) {
       if (cut.part(f) == Part::behind) {
         ++out.stats.faces_behind_eye;
+      } else if (is_culled(f)) {
+        ++out.stats.faces_culled;
       } else if (facing[f] == 0) {
         ++out.stats.edge_on_faces_removed;
       } else if (facing[f] * topo.outward[f] < 0 && remove_back_faces) {
@@ -244,14 +254,9 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     std::vector<std::vector<std::uint32_t>> members(nf);
     for (std::uint32_t f = 0; f < nf; ++f)
       if (keep[f]) members[options.consolidate ? topo.coplanar_group[f] : f].push_back(f);
-    const std::vector<bool>* culled = options.culled ? &(*options.culled)[mi] : nullptr;
     for (std::uint32_t g = 0; g < nf; ++g) {
       const auto& faces = members[g];
       if (faces.empty()) continue;
-      if (culled && std::all_of(faces.begin(), faces.end(), [&](std::uint32_t f) { return (*culled)[f]; })) {
-        ++out.stats.sources_culled;
-        continue;
-      }
       if (faces.size() > 1) {
         std::vector<clip::Contour<K>> contours;
         for (std::uint32_t f : faces) contours.push_back(face_contour(f));

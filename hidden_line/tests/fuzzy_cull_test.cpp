@@ -1,7 +1,8 @@
 // Tests of the fuzzy culling (fuzzy_cull.hpp), checked exactly: every culled face has no visible
 // polygon in the exact solution without culling (faces unconsolidated, so that each source is one
 // face), from every eye of the group and from random eyes inside the group's box; and the exact
-// visible area of each view is the same with the culled sources left out.
+// visible area of each view is the same with the culled sources left out. Boxes peeking past a
+// wall by a sliver, seen from one eye only, test the culler where an unsafe rounding would show.
 #include <hlr/hidden_line/fuzzy_cull.hpp>
 #include <hlr/hidden_line/jobs.hpp>
 #include <hlr/kernel/near_plane.hpp>
@@ -10,6 +11,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -123,11 +125,11 @@ std::size_t check_conservative(const Scene& scene, const std::vector<View>& view
 
 const Vec3 kTarget{0, 0, 2};
 
-std::vector<View> eye_group(const Vec3& centre, double size) {
+std::vector<View> eye_group(const Vec3& centre, double size, const Vec3& target = kTarget) {
   std::vector<View> views;
   const double offsets[5][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0.5}, {0.5, 0.5, 1}, {1, 1, -0.5}};
   for (const auto& o : offsets)
-    views.push_back(eye_view({centre[0] + o[0] * size, centre[1] + o[1] * size, centre[2] + o[2] * size}, kTarget));
+    views.push_back(eye_view({centre[0] + o[0] * size, centre[1] + o[1] * size, centre[2] + o[2] * size}, target));
   return views;
 }
 
@@ -212,6 +214,53 @@ RC_GTEST_PROP(FuzzyCullProperty, CulledFacesAreNeverSeen, ()) {
   auto views = eye_group(centre, size);
   for (const View& v : views) RC_PRE(!perspective_defect(scene.meshes, v));
   const std::size_t culled = check_conservative(scene, views, kTarget, 1, 7);
+  RC_TAG(culled > 0 ? "culls" : "culls nothing");
+  RC_ASSERT(!::testing::Test::HasFailure());
+}
+
+// A box behind a wall that one eye of the group sees by a sliver only: past the wall's end or over
+// its top, by `peek` beyond the ray from that eye through the wall's outline. The culler must keep
+// its faces that the eye sees; a culler that rounds one step the unsafe way (an extent from one eye
+// only, a pixel too few) culls them. A second box wholly behind the wall gives it something to cull.
+RC_GTEST_PROP(FuzzyCullProperty, BarelyVisibleFacesAreKept, ()) {
+  // Eyes close to the wall and boxes far behind it: the parallax across the box of eyes is many
+  // pixels of the fuzzy cube, so that an unsafe rounding shows.
+  const double wall_y = *rc::gen::inRange(0, 3), height = *rc::gen::inRange(2, 5);
+  const double x0 = -*rc::gen::inRange(2, 8), x1 = *rc::gen::inRange(2, 8);
+  const Vec3 centre{double(*rc::gen::inRange(-1, 2)), -4.0 + *rc::gen::inRange(0, 3), 1.0 + *rc::gen::inRange(0, 2)};
+  const double size = *rc::gen::element(0.1, 0.5, 1.0);
+  // Looking along +Y, so that everything behind the wall is in front of every eye.
+  const Vec3 target{centre[0], 40, centre[2]};
+  const auto views = eye_group(centre, size, target);
+  const Vec3 eye = *views[std::size_t(*rc::gen::inRange(0, 5))].eye;
+  const double peek = *rc::gen::element(1e-4, 1e-3, 1e-2, 0.1);
+  const int side = *rc::gen::inRange(0, 3);  // 0: past the right end, 1: past the left end, 2: over the top
+  const double y0 = wall_y + 0.25 + *rc::gen::inRange(1, 40) / 4.0, depth = *rc::gen::inRange(1, 4) / 2.0;
+  // Where the rays from the eye through the wall's outline edge (on its near or its far face) are
+  // at depth y0: the outermost of the two bounds what the wall hides there.
+  auto ray = [&](int k, double outline, double y) { return eye[k] + (outline - eye[k]) * (y0 - eye[1]) / (y - eye[1]); };
+  auto outermost = [&](int k, double outline, int sign) {
+    return sign * std::max(sign * ray(k, outline, wall_y), sign * ray(k, outline, wall_y + 0.25));
+  };
+  Box3 peeker{};
+  if (side == 0) {
+    const double x = outermost(0, x1, 1);
+    peeker = {x - 1, y0, 0.5, x + peek, y0 + depth, height - 0.5};
+  } else if (side == 1) {
+    const double x = outermost(0, x0, -1);
+    peeker = {x - peek, y0, 0.5, x + 1, y0 + depth, height - 0.5};
+  } else {
+    const double z = outermost(2, height, 1);
+    peeker = {-1, y0, z - 1, 1, y0 + depth, z + peek};
+  }
+  const Box3 wall{x0, wall_y, 0, x1, wall_y + 0.25, height};
+  const Box3 hidden{-0.5, y0 + depth + 1, 0.5, 0.5, y0 + depth + 2, 1.5};
+  const Scene scene = scene_of({boxes_mesh({wall, peeker, hidden})});
+  for (const View& v : views) RC_PRE(!perspective_defect(scene.meshes, v));
+  // The construction is right: the chosen eye sees the peeking box (its faces 6 to 11).
+  const auto seen = seen_faces(scene, eye_view(eye, target));
+  RC_ASSERT(std::any_of(seen[0].begin() + 6, seen[0].begin() + 12, [](bool b) { return b; }));
+  const std::size_t culled = check_conservative(scene, views, target, 0, 11);
   RC_TAG(culled > 0 ? "culls" : "culls nothing");
   RC_ASSERT(!::testing::Test::HasFailure());
 }

@@ -42,6 +42,33 @@ std::string wall_scene() {
   return off.str();
 }
 
+// An OFF file of closed, outward boxes (corner c has bits x, y, z).
+struct Box {
+  double x0, y0, z0, x1, y1, z1;
+};
+std::string boxes_off(const std::vector<Box>& boxes) {
+  std::ostringstream off;
+  off << "OFF\n" << 8 * boxes.size() << ' ' << 6 * boxes.size() << " 0\n";
+  for (const Box& b : boxes)
+    for (int c = 0; c < 8; ++c) off << (c & 1 ? b.x1 : b.x0) << ' ' << (c & 2 ? b.y1 : b.y0) << ' ' << (c & 4 ? b.z1 : b.z0) << '\n';
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const std::size_t o = 8 * i;
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) off << "4 " << o + q[0] << ' ' << o + q[1] << ' ' << o + q[2] << ' ' << o + q[3] << '\n';
+  }
+  return off.str();
+}
+
+// A wall 8 m wide with a box behind it, and a box far away that makes the scene's diagonal long
+// enough (a tenth of it: 6.1 m) for the eyes, in two clusters 5 m apart, to form one group. Over
+// the group's box the umbra of the wall is narrower than the box behind it, and nothing useful is
+// culled; each cluster alone has the box behind the wall culled.
+std::string split_scene() {
+  return boxes_off({{-4, 0, 0, 4, 0.2, 4}, {-0.5, 1, 1, 0.5, 2, 2}, {40, 40, 0, 41, 41, 1}});
+}
+// Clusters A (frames 0, 2, 4) and B (frames 1, 3), interleaved: the parts are not consecutive.
+const char* kSplitEyes = "-2.5 -10 2\n2.5 -10 2\n-2.45 -10 2.05\n2.55 -10 2.05\n-2.5 -9.95 2\n";
+
 class CliFrames : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -140,6 +167,67 @@ TEST_F(CliFrames, FuzzyCullingChangesNoByteButTheStats) {
     std::size_t hidden = 0;
     for (const auto& line : fuzzy.at("lines")) hidden += !line.at("visible").get<bool>();
     EXPECT_GE(hidden, 36u);
+  }
+}
+
+TEST_F(CliFrames, AGroupTooWideToCullIsSplit) {
+  const fs::path mesh = input("split.off", split_scene());
+  const fs::path eyes = input("eyes.txt", kSplitEyes);
+  std::string summary;
+  for (const std::string cull : {"fuzzy", "none"}) {
+    const Outcome run = hlr({"frames", mesh.string(), "--eyes", eyes.string(), "--target", "0,0,2", "--cull", cull, "-o",
+                             (dir_ / "out" / (cull + "_%d.json")).string(), "-o", (dir_ / "out" / (cull + "_%d.svg")).string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    if (cull == "fuzzy") summary = run.out;
+  }
+  EXPECT_NE(summary.find("5 frames in 1 group"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("parts"), std::string::npos) << summary;
+  std::vector<std::size_t> part(5);
+  for (int i = 0; i < 5; ++i) {
+    const std::string n = std::to_string(i);
+    const json fuzzy = json::parse(slurp(out("fuzzy_" + n + ".json"))), none = json::parse(slurp(out("none_" + n + ".json")));
+    EXPECT_EQ(without_stats(fuzzy).dump(), without_stats(none).dump()) << i;
+    EXPECT_EQ(slurp(out("fuzzy_" + n + ".svg")), slurp(out("none_" + n + ".svg"))) << i;
+    const json& cull = fuzzy.at("stats").at("cull");
+    EXPECT_EQ(cull.at("group"), 0u);
+    EXPECT_EQ(cull.at("parts"), 2u) << cull;
+    part[i] = cull.at("part").get<std::size_t>();
+    // The box behind the wall's faces towards the eyes, beside back faces.
+    EXPECT_GE(cull.at("culled").get<int>(), 3) << cull;
+    EXPECT_EQ(none.at("stats").at("cull").at("parts"), 1u);
+  }
+  // The parts are the clusters, numbered by first frame.
+  EXPECT_EQ(part, (std::vector<std::size_t>{0, 1, 0, 1, 0}));
+}
+
+TEST_F(CliFrames, CullReportSolvesEveryFrameTwiceAndChangesNoByte) {
+  const fs::path mesh = input("wall.off", wall_scene());
+  const fs::path eyes = input("eyes.txt", "0 -10 2\n0.2 -10 2\n0 -10.2 2.1\n");
+  for (const std::string mode : {"report", "none"}) {
+    std::vector<std::string> args{"frames", mesh.string(), "--eyes", eyes.string(), "--target", "0,0,2", "--progress", "-o",
+                                  (dir_ / "out" / (mode + "_%d.json")).string(), "-o", (dir_ / "out" / (mode + "_%d.svg")).string()};
+    if (mode == "report") args.push_back("--cull-report");
+    else args.insert(args.end(), {"--cull", "none"});
+    const Outcome run = hlr(args);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    if (mode == "report") {
+      EXPECT_NE(run.out.find("without culling"), std::string::npos) << run.out;
+      EXPECT_NE(run.out.find("saved"), std::string::npos) << run.out;
+      EXPECT_NE(run.err.find("without culling (--cull-report)"), std::string::npos) << run.err;
+    }
+  }
+  double saved = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::string n = std::to_string(i);
+    const json report = json::parse(slurp(out("report_" + n + ".json"))), none = json::parse(slurp(out("none_" + n + ".json")));
+    EXPECT_EQ(without_stats(report).dump(), without_stats(none).dump()) << i;
+    EXPECT_EQ(slurp(out("report_" + n + ".svg")), slurp(out("none_" + n + ".svg"))) << i;
+    const json& cull = report.at("stats").at("cull");
+    EXPECT_GT(cull.at("unculled_seconds").get<double>(), 0) << cull;
+    // One number for the group, in every frame.
+    if (i == 0) saved = cull.at("group_saved_seconds").get<double>();
+    EXPECT_EQ(cull.at("group_saved_seconds").get<double>(), saved) << cull;
+    EXPECT_FALSE(none.at("stats").at("cull").contains("unculled_seconds"));
   }
 }
 

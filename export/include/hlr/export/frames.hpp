@@ -6,7 +6,8 @@
 //   draw_frames    every frame's drawing, each as draw_lines (or draw_raster) draws it alone: the
 //                  scene's intersections are found once for all; the eyes are grouped, and with
 //                  CullMode::fuzzy the faces no eye of a group can see (hidden_line/fuzzy_cull.hpp)
-//                  are left out of its frames' area sorts (exact kernel; the drawings are the same).
+//                  are left out of its frames' sources (exact kernel; the drawings are the same).
+//                  A group whose box of eyes is too large to cull anything is split (cull_parts).
 //   frames_sheet   the one scale and centre at which every frame's sheet shows it, so that the
 //                  frames play as an animation.
 #pragma once
@@ -48,12 +49,33 @@ struct FramesOptions {
   // axis; 0: a tenth of the scene's bounding-box diagonal (a larger box culls little).
   double group_extent = 0;
   int raster = 0;  // pixels: draw each frame by the raster path instead (no culling there)
+  // With culling: solve every frame a second time without it, for FrameGroup::unculled_seconds
+  // (what the culling saved, measured rather than guessed; the run takes about twice as long).
+  bool cull_report = false;
+};
+
+// The eyes of a group that one fuzzy pass culls for (cull_parts).
+struct CullPart {
+  std::vector<std::size_t> frames;  // ascending
+  std::size_t culled = 0;           // faces culled for these eyes
+  std::size_t useful = 0;           // of those, the ones a view would keep (not back faces)
+  std::vector<std::vector<bool>> faces;  // per mesh, per face: culled (empty when none is)
 };
 
 struct FrameGroup {
   std::size_t first = 0, count = 0;  // frames first .. first + count - 1
-  std::size_t patches = 0, culled = 0;
-  double fuzzy_seconds = 0;
+  std::size_t patches = 0;
+  std::size_t culled = 0;            // the most faces culled for one of its parts
+  std::size_t parts = 1;             // after splitting (cull_parts)
+  std::size_t fuzzy_passes = 0;      // those that culled nothing and were split included
+  double fuzzy_seconds = 0;          // all its fuzzy passes
+  double solve_seconds = 0;          // the sum of its frames' stats.seconds (with the culling)
+  std::optional<double> unculled_seconds;  // cull_report: the same sum, solved without culling
+  // cull_report: the time the culling saved the group, its fuzzy passes paid for.
+  std::optional<double> saved_seconds() const {
+    if (!unculled_seconds) return std::nullopt;
+    return *unculled_seconds - solve_seconds - fuzzy_seconds;
+  }
 };
 
 struct FrameSet {
@@ -64,6 +86,13 @@ struct FrameSet {
 
 // The groups of consecutive eyes (FramesOptions::group_extent).
 std::vector<FrameGroup> group_eyes(const std::vector<View>& views, double extent);
+
+// The fuzzy culling of the eyes `frames` of `views`: one pass over their box; when it culls
+// nothing useful (no face but back faces, which every view removes anyway) and there are two
+// eyes or more, the eyes are split once, at the middle of the box's longest axis, and each half
+// is culled alone (at most three passes). Every pass's time and count go to `group`.
+std::vector<CullPart> cull_parts(const Scene& scene, const std::vector<View>& views, std::vector<std::size_t> frames,
+                                 const hidden_line::FuzzyOptions& options, StopToken stop, FrameGroup& group);
 
 // Every view must be a perspective view that can be drawn of the scene (perspective_defect). The
 // progress gets a stage per frame ("frame 3 of 36"). Throws as draw_lines does.

@@ -123,8 +123,10 @@ struct LineDrawing {
   // A frame of `hlr frames`: its group of eyes and what the fuzzy culling of that group left out of
   // the area sort (JSON stats "cull"); absent: not written.
   struct CullCounts {
-    std::size_t group = 0, patches = 0, culled = 0;
-    double fuzzy_seconds = 0;
+    std::size_t group = 0, part = 0, parts = 1, patches = 0, culled = 0;
+    double fuzzy_seconds = 0;                // the group's fuzzy passes
+    std::optional<double> unculled_seconds;  // --cull-report: this frame solved without culling
+    std::optional<double> group_saved_seconds;  // --cull-report: FrameGroup::saved_seconds
   };
   std::optional<CullCounts> cull;
   // Total image-plane length of `segments` (what a drawing shows), visible and hidden, model units.

@@ -28,9 +28,11 @@
 // Doubles only, and every rounding goes the safe way: the result is conservative by construction,
 // never exact in the sense of the area sort (it culls less than it could, never more).
 //
-// What the views do with it (SourceOptions::culled): a source whose faces are all culled is left
-// out of the area sort. It covers no point that its occluders do not cover strictly nearer, so the
-// visible polygons are the same sets and every line is classified the same way.
+// What the views do with it (SourceOptions::culled): a culled face is left out of the sources
+// before its facing is computed, as if it were not in the mesh (a coplanar group merges the rest).
+// It covers no point that its occluders do not cover strictly nearer (and an occluder that is
+// culled itself has one nearer still), so the visible polygons are the same sets and every line is
+// classified the same way.
 #pragma once
 
 #include <hlr/kernel/errors.hpp>
@@ -51,6 +53,9 @@ struct FuzzyCull {
   std::vector<std::vector<bool>> culled;  // per mesh, per face: hidden from every eye of the group
   std::size_t patches = 0;                // faces of the scene
   std::size_t culled_faces = 0;
+  // Of those, the back faces of closed components (as seen from all of B): every view removes
+  // them anyway (but one whose near plane cuts their component), so culling them saves nothing.
+  std::size_t culled_back_faces = 0;
   std::size_t occluders = 0, regions = 0;  // faces and regions that went into the depth buffer
   double seconds = 0;
 };

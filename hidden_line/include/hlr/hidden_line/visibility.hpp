@@ -62,7 +62,7 @@ struct SourceStats {
   std::size_t sources = 0;
   std::size_t closed_components = 0, open_components = 0;
   std::size_t inward_components = 0;  // closed components whose faces face inward: culled as turned outward
-  std::size_t sources_culled = 0;     // left out because all their faces are in SourceOptions::culled
+  std::size_t faces_culled = 0;       // left out because they are in SourceOptions::culled
 };
 
 template <class K>
@@ -90,9 +90,9 @@ struct Sources {
 struct SourceOptions {
   bool remove_back_faces = true;
   bool consolidate = true;
-  // Per mesh, per face: faces that nothing in the view can show (fuzzy_cull.hpp), or null. A
-  // source whose faces are all culled is left out; the others are made as without it, culled
-  // faces and all.
+  // Per mesh, per face: faces that nothing in the view can show (fuzzy_cull.hpp), or null. They
+  // are left out of the sources as if they were not in the mesh (a coplanar group merges the
+  // rest); what is seen, and every line's visibility, is the same.
   const std::vector<std::vector<bool>>* culled = nullptr;
   StopToken stop;  // polled as the faces are projected
 };

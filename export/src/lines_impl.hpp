@@ -32,22 +32,31 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   d.kernel = kernel;
   d.stats = lines.stats;
 
-  // A line's ends as written: an intersection's by way of its ends' recipes where they apply.
+  // Each line's ends as written, rounded once for its pieces and its drawing segments: an
+  // intersection's by way of its ends' recipes where they apply.
   const RecipeRounding recipe_rounding(frame.view());
-  auto end_point = [&](const hidden_line::FeatureLine<K>& line, int end) -> Point3 {
-    if constexpr (G::exact_constructions)
-      if (line.end_recipes != line.kNoRecipes)
-        if (const auto v = recipe_rounding.nearest(lines.end_recipes[line.end_recipes][end]))
-          return {(*v)[0] / frame.scale(0) + 0.0, (*v)[1] / frame.scale(1) + 0.0, (*v)[2] / frame.scale(2) + 0.0};
-    const ViewPoint<K>& p = end == 0 ? line.a : line.b;
-    return {frame.rounded(p.x, 0), frame.rounded(p.y, 1), frame.rounded(p.z, 2)};
+  std::vector<std::array<Point3, 2>> ends(lines.lines.size());
+  auto round_ends = [&](std::size_t index) {
+    const auto& line = lines.lines[index];
+    for (int end = 0; end < 2; ++end) {
+      Point3& written = ends[index][end];
+      if constexpr (G::exact_constructions)
+        if (line.end_recipes != line.kNoRecipes)
+          if (const auto v = recipe_rounding.nearest(lines.end_recipes[line.end_recipes][end])) {
+            for (int axis = 0; axis < 3; ++axis) written[axis] = (*v)[axis] / frame.scale(axis) + 0.0;
+            continue;
+          }
+      const ViewPoint<K>& p = end == 0 ? line.a : line.b;
+      written = {frame.rounded(p.x, 0), frame.rounded(p.y, 1), frame.rounded(p.z, 2)};
+    }
   };
-  // The point at t of a line as written (z too when the axes are 3).
-  auto at = [&](const hidden_line::FeatureLine<K>& line, const FT& t, int axes = 3) -> Point3 {
+  // The point at t of line `index` as written (z too when the axes are 3), once its ends are.
+  auto at = [&](std::size_t index, const FT& t, int axes = 3) -> Point3 {
     if constexpr (G::exact_constructions) {
       const auto [lo, hi] = G::interval(t);
-      if (lo == hi && (lo == 0 || lo == 1)) return end_point(line, lo == 0 ? 0 : 1);
+      if (lo == hi && (lo == 0 || lo == 1)) return ends[index][lo == 0 ? 0 : 1];
     }
+    const auto& line = lines.lines[index];
     const FT* from[3] = {&line.a.x, &line.a.y, &line.a.z};
     const FT* to[3] = {&line.b.x, &line.b.y, &line.b.z};
     Point3 written{};
@@ -64,6 +73,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
     for (std::size_t index = range.begin(); index != range.end(); ++index) {
       const auto& line = lines.lines[index];
       if (line.pieces.empty()) continue;
+      round_ends(index);
       DrawingPiece* out = &d.pieces[first[index]];
       for (std::size_t k = 0; k < line.pieces.size(); ++k) {
         const auto& piece = line.pieces[k];
@@ -73,10 +83,10 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
           p.a = out[k - 1].b;
           p.t0 = out[k - 1].t1;
         } else {
-          p.a = at(line, piece.t0);
+          p.a = at(index, piece.t0);
           p.t0 = G::to_double(piece.t0);
         }
-        p.b = at(line, piece.t1);
+        p.b = at(index, piece.t1);
         p.t1 = G::to_double(piece.t1);
         p.visible = piece.visible;
         p.kind = line.kind;
@@ -95,9 +105,8 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
       const auto& s = segments[i];
       Point2 a, b;
       if constexpr (G::exact_constructions) {
-        // The same exact points by way of their line, so that its ends take the way above.
-        const auto& line = lines.lines[s.line];
-        const Point3 pa = at(line, s.t0, 2), pb = at(line, s.t1, 2);
+        // The same exact points by way of their line (one with pieces), whose ends are rounded.
+        const Point3 pa = at(s.line, s.t0, 2), pb = at(s.line, s.t1, 2);
         a = {pa[0], pa[1]};
         b = {pb[0], pb[1]};
       } else {

@@ -21,27 +21,6 @@ const std::string kBinary = HLR_BINARY;
 const fs::path kScenes = HLR_SCENE_FIXTURES;
 const fs::path kShared = HLR_SHARED_SCENES;
 
-// A wall (a closed box 10 x 0.2 x 5) in front of three small boxes that no eye near (0, -10, 2)
-// sees, and one box beside the wall that every eye sees: the fuzzy culling has work to do.
-std::string wall_scene() {
-  std::ostringstream off;
-  struct B {
-    double x0, y0, z0, x1, y1, z1;
-  };
-  const std::vector<B> boxes{{-5, 0, 0, 5, 0.2, 5}, {-1, 2, 0.5, 0, 3, 1.5}, {1, 2.5, 1, 2, 3.5, 2}, {-3, 4, 0, -2, 5, 3},
-                             {7, 1, 0, 8, 2, 1}};
-  off << "OFF\n" << 8 * boxes.size() << ' ' << 6 * boxes.size() << " 0\n";
-  for (const B& b : boxes)
-    for (int c = 0; c < 8; ++c) off << (c & 1 ? b.x1 : b.x0) << ' ' << (c & 2 ? b.y1 : b.y0) << ' ' << (c & 4 ? b.z1 : b.z0) << '\n';
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
-    const std::size_t o = 8 * i;
-    // Outward quads of the box whose corner c has bits (x, y, z).
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-    for (const auto& q : quads) off << "4 " << o + q[0] << ' ' << o + q[1] << ' ' << o + q[2] << ' ' << o + q[3] << '\n';
-  }
-  return off.str();
-}
-
 // An OFF file of closed, outward boxes (corner c has bits x, y, z).
 struct Box {
   double x0, y0, z0, x1, y1, z1;
@@ -57,6 +36,13 @@ std::string boxes_off(const std::vector<Box>& boxes) {
     for (const auto& q : quads) off << "4 " << o + q[0] << ' ' << o + q[1] << ' ' << o + q[2] << ' ' << o + q[3] << '\n';
   }
   return off.str();
+}
+
+// A wall (a closed box 10 x 0.2 x 5) in front of three small boxes that no eye near (0, -10, 2)
+// sees, and one box beside the wall that every eye sees: the fuzzy culling has work to do.
+std::string wall_scene() {
+  return boxes_off({{-5, 0, 0, 5, 0.2, 5}, {-1, 2, 0.5, 0, 3, 1.5}, {1, 2.5, 1, 2, 3.5, 2}, {-3, 4, 0, -2, 5, 3},
+                    {7, 1, 0, 8, 2, 1}});
 }
 
 // A wall 8 m wide with a box behind it, and a box far away that makes the scene's diagonal long

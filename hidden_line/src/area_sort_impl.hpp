@@ -123,11 +123,16 @@ class AreaSort {
               return true;
     auto separates = [](const clip::Contour<K>& own, const clip::Contour<K>& other) {
       for (std::size_t i = 0; i < own.size(); ++i)
-        if (on_closed_side(own, i, own, 1) && on_closed_side(own, i, other, -1)) return true;
+        if ((exact_triangle(own) || on_closed_side(own, i, own, 1)) && on_closed_side(own, i, other, -1)) return true;
       return false;
     };
     return separates(a, b) || separates(b, a);
   }
+
+  // An outer contour of three corners on the exact kernel: counter-clockwise with a positive area
+  // (sources and clip results both are), so each corner lies strictly left of the opposite edge and
+  // the triangle is convex, without an orientation test.
+  static bool exact_triangle(const clip::Contour<K>& c) { return G::exact_constructions && c.size() == 3; }
 
   // Whether every corner of c lies on the closed left (side 1) or right (side -1) of the line
   // through edge i of `own`. Exact.
@@ -147,6 +152,7 @@ class AreaSort {
     constexpr std::size_t kMaxCorners = 16;
     const auto& c = front.outer;
     if (!front.holes.empty() || c.size() > kMaxCorners) return false;
+    if (exact_triangle(c)) return true;
     for (std::size_t i = 0; i < c.size(); ++i)
       if (G::orientation(c.points[i], c.points[(i + 1) % c.size()], c.points[(i + 2) % c.size()]) <= 0) return false;
     return true;

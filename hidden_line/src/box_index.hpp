@@ -37,6 +37,7 @@ class LooseGrid {
     // About one finest cell per box, at most 2^10 x 2^10.
     while (levels_ < 11 && (std::size_t(1) << (2 * (levels_ - 1))) < expected) ++levels_;
     for (int l = 0; l < levels_; ++l) cells_.emplace_back(std::size_t(1) << (2 * l));
+    filed_.assign(std::size_t(levels_), 0);
     // A few ulps of the domain's coordinates: what rounding may move a box's centre by.
     slack_x_ = 1e-15 * (std::abs(domain_.xmin()) + std::abs(domain_.xmax()));
     slack_y_ = 1e-15 * (std::abs(domain_.ymin()) + std::abs(domain_.ymax()));
@@ -46,23 +47,28 @@ class LooseGrid {
   void insert(std::uint32_t id, const CGAL::Bbox_2& box) {
     if (id >= boxes_.size()) boxes_.resize(id + 1);
     boxes_[id] = box;
-    cell_of(box).push_back(id);
+    const int l = level_of(box);
+    cell_of(box, l).push_back(id);
+    ++filed_[l];
   }
 
   // Takes an inserted id out, so that queries no longer look at it (the area sort's pieces that a
   // clip replaced). The order of ids in a cell changes; queries promise no order.
   void remove(std::uint32_t id) {
-    auto& ids = cell_of(boxes_[id]);
+    const int l = level_of(boxes_[id]);
+    auto& ids = cell_of(boxes_[id], l);
     const auto it = std::find(ids.begin(), ids.end(), id);
     if (it == ids.end()) return;
     *it = ids.back();
     ids.pop_back();
+    --filed_[l];
   }
 
   // Calls visit(id) for every inserted id whose box overlaps `box` (each id once).
   template <class Visit>
   void query(const CGAL::Bbox_2& box, Visit&& visit) const {
     for (int l = 0; l < levels_; ++l) {
+      if (filed_[l] == 0) continue;  // boxes of like sizes fill one or two levels of the eleven
       // A box filed at level l that overlaps `box` is at most a cell wide and high, so its centre
       // lies within half a cell of `box`; the cells within three quarters of one (and the slack)
       // hold every such box, whatever the rounding of widths and centres.
@@ -86,9 +92,12 @@ class LooseGrid {
   }
   // The cell a box is filed in: at the finest level whose cells are as wide and as high as it,
   // the cell of its centre.
-  std::vector<std::uint32_t>& cell_of(const CGAL::Bbox_2& box) {
+  int level_of(const CGAL::Bbox_2& box) const {
     int l = levels_ - 1;
     while (l > 0 && (box.xmax() - box.xmin() > cell_w(l) || box.ymax() - box.ymin() > cell_h(l))) --l;
+    return l;
+  }
+  std::vector<std::uint32_t>& cell_of(const CGAL::Bbox_2& box, int l) {
     const double cx = box.xmin() + (box.xmax() - box.xmin()) / 2, cy = box.ymin() + (box.ymax() - box.ymin()) / 2;
     return cells_[l][index(l, cell(cx, domain_.xmin(), cell_w(l), l), cell(cy, domain_.ymin(), cell_h(l), l))];
   }
@@ -98,6 +107,7 @@ class LooseGrid {
   double width_ = 1, height_ = 1, slack_x_ = 0, slack_y_ = 0;
   int levels_ = 1;
   std::vector<std::vector<std::vector<std::uint32_t>>> cells_;  // per level, per cell
+  std::vector<std::size_t> filed_;                               // per level: boxes filed there
   std::vector<CGAL::Bbox_2> boxes_;
 };
 

@@ -21,35 +21,26 @@
 namespace hlr::hidden_line {
 namespace detail {
 
-// Model-space facts about one mesh's faces, independent of the view.
+// Model-space facts about one mesh's faces, independent of the view (hlr::MeshTopology, found
+// once per mesh of a scene), under the names the stages use.
 struct MeshTopology {
-  std::vector<EdgeUse> uses;                 // sorted by key
-  std::vector<std::int8_t> outward;         // per face, as ComponentSides::outward
-  std::vector<std::array<std::uint32_t, 3>> plane_vertices;  // per face: three non-collinear corners
-  std::vector<std::uint32_t> coplanar_group; // per face: lowest face of its coplanar, connected group
-  std::size_t closed_components = 0, open_components = 0, inward_components = 0;
+  explicit MeshTopology(std::shared_ptr<const hlr::MeshTopology> topology)
+      : kept(std::move(topology)), uses(kept->uses), outward(kept->sides.outward),
+        plane_vertices(kept->groups.plane_vertices), coplanar_group(kept->groups.group),
+        closed_components(kept->sides.closed), open_components(kept->sides.open),
+        inward_components(kept->sides.inward) {}
+  std::shared_ptr<const hlr::MeshTopology> kept;
+  const std::vector<EdgeUse>& uses;                                // sorted by key
+  const std::vector<std::int8_t>& outward;                         // per face, as ComponentSides::outward
+  const std::vector<std::array<std::uint32_t, 3>>& plane_vertices;  // per face: three non-collinear corners
+  const std::vector<std::uint32_t>& coplanar_group;  // per face: lowest face of its coplanar, connected group
+  std::size_t closed_components, open_components, inward_components;
 };
 
 // Predicates only, on input doubles: exact with Epick, and without Epeck's lazy nodes.
 using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-inline MeshTopology analyse_mesh(const Mesh& mesh) {
-  MeshTopology t;
-  t.uses = edge_uses(mesh);
-
-  const ComponentSides sides = component_sides(mesh, t.uses);
-  t.outward = sides.outward;
-  t.closed_components = sides.closed;
-  t.open_components = sides.open;
-  t.inward_components = sides.inward;
-
-  // Coplanar groups (mesh_edges.hpp): faces joined across an edge they run in opposite
-  // directions, with every corner of one in the plane of the other.
-  CoplanarGroups groups = coplanar_groups(mesh, t.uses);
-  t.plane_vertices = std::move(groups.plane_vertices);
-  t.coplanar_group = std::move(groups.group);
-  return t;
-}
+inline MeshTopology analyse_mesh(const Mesh& mesh) { return MeshTopology(topology_of(mesh)); }
 
 }  // namespace detail
 

@@ -125,7 +125,7 @@ class SmoothSurfaces {
     std::uint32_t v0, v1, f, g;
   };
 
-  SmoothSurfaces(const Mesh& mesh, const std::vector<EdgeUse>& uses) : mesh_(mesh), groups_(coplanar_groups(mesh, uses)) {}
+  SmoothSurfaces(const Mesh& mesh, const CoplanarGroups& groups) : mesh_(mesh), groups_(groups) {}
 
   std::uint32_t group(std::uint32_t f) const { return groups_.group[f]; }
 
@@ -222,7 +222,7 @@ class SmoothSurfaces {
   }
 
   const Mesh& mesh_;
-  CoplanarGroups groups_;
+  const CoplanarGroups& groups_;
   std::vector<Soft> soft_;
   std::unordered_map<std::uint32_t, std::vector<std::size_t>> soft_by_group_;  // group -> soft edges
   std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> members_;      // group -> corners
@@ -252,8 +252,9 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
       : options.smooth_edges == SmoothEdges::thin ? std::optional(FeatureKind::smooth)
                                                   : std::optional(FeatureKind::crease);
 
-  const std::vector<EdgeUse> uses = edge_uses(mesh);
-  const ComponentSides sides = component_sides(mesh, uses);
+  const std::shared_ptr<const MeshTopology> topology = topology_of(mesh);
+  const std::vector<EdgeUse>& uses = topology->uses;
+  const ComponentSides& sides = topology->sides;
   // Meshes' smooth edges need every soft edge known first (a strip is known by its soft edges).
   std::optional<SmoothSurfaces> surfaces;
   auto soft_edge = [&](EdgeUses first) -> std::optional<SmoothSurfaces::Soft> {
@@ -264,7 +265,7 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
     return SmoothSurfaces::Soft{edge_low(first->key), edge_high(first->key), f, g};
   };
   if (smooth_kind && mesh.source_edges.empty()) {
-    surfaces.emplace(mesh, uses);
+    surfaces.emplace(mesh, topology->groups);
     for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
       if (last - first != 2) return;
       if (const auto soft = soft_edge(first)) surfaces->add_soft(*soft);

@@ -111,4 +111,16 @@ CoplanarGroups coplanar_groups(const Mesh& mesh, const std::vector<EdgeUse>& use
   return out;
 }
 
+MeshTopology analyse_mesh(const Mesh& mesh) {
+  MeshTopology t;
+  t.uses = edge_uses(mesh);
+  t.sides = component_sides(mesh, t.uses);
+  t.groups = coplanar_groups(mesh, t.uses);
+  return t;
+}
+
+std::shared_ptr<const MeshTopology> topology_of(const Mesh& mesh) {
+  return mesh.topology ? mesh.topology : std::make_shared<const MeshTopology>(analyse_mesh(mesh));
+}
+
 }  // namespace hlr

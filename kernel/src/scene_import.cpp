@@ -316,6 +316,7 @@ void Scene::add(Mesh mesh, const ImportReport& report) {
   input.welded_vertices += report.welded_vertices;
   input.parts.push_back(mesh.name);
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+  mesh.topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
   meshes.push_back(std::move(mesh));
 }
 

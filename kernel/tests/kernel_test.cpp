@@ -123,6 +123,76 @@ TEST(ExactKernel, FilteredShortcutsAgreeWithExactEvaluation) {
   EXPECT_GT(zeros, 100u) << "the draws must hit ties";
 }
 
+// The double filter in front of CGAL's orientation (interval_orientation.hpp) on points whose
+// intervals have width (crossings of lines), where its error bound matters: a decided sign must be
+// the exact one, on crossings exactly on a line (orientation 0), nudged off it by an ulp, far from
+// the origin and of mixed magnitude; and it must decide the ordinary cases itself.
+TEST(ExactKernel, IntervalOrientationFilterIsExactWhereItDecides) {
+  using G = Geometry<ExactKernel>;
+  std::mt19937_64 random(20261203);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  auto value = [&](int mode) {
+    switch (mode) {
+      case 0: return unit(random);
+      case 1: return std::round(unit(random) * 4) / 4;                              // coarse grid
+      case 2: return 1e8 + unit(random);                                            // far from the origin
+      default: return unit(random) < 0 ? unit(random) * 1e-9 : unit(random) * 1e9;  // mixed magnitude
+    }
+  };
+  auto random_point = [&](int mode) { return G::point(value(mode), value(mode)); };
+  // Whether the lines through a, b and c, d cross (are not parallel), decided before constructing
+  // their crossing: the construction throws on parallel lines, from within a lazy evaluation.
+  auto cross = [](const auto& a, const auto& b, const auto& c, const auto& d) {
+    return a != b && c != d && !CGAL::is_zero(CGAL::determinant(b - a, d - c));
+  };
+  // A constructed point: the crossing of two random lines.
+  auto crossing = [&](int mode) {
+    for (;;) {
+      const auto a = random_point(mode), b = random_point(mode), c = random_point(mode), d = random_point(mode);
+      if (cross(a, b, c, d)) return G::line_intersection(a, b, c, d);
+    }
+  };
+  // A constructed point exactly on the line through p and q: its crossing with another line.
+  auto on_line = [&](const ExactKernel::Point_2& p, const ExactKernel::Point_2& q, int mode) {
+    for (;;) {
+      const auto c = random_point(mode), d = crossing(mode);
+      if (cross(p, q, c, d)) return G::line_intersection(p, q, c, d);
+    }
+  };
+  std::size_t decided = 0, zeros = 0, ordinary = 0, ordinary_decided = 0;
+  for (int i = 0; i < 8000; ++i) {
+    const int mode = i % 4;
+    const auto p = crossing(mode);
+    auto q = crossing(mode);
+    while (q == p) q = crossing(mode);  // the grid repeats crossings
+    ExactKernel::Point_2 r;
+    switch (i / 4 % 3) {
+      case 0: r = crossing(mode); break;                                         // ordinary
+      case 1: r = on_line(p, q, mode); break;                                    // on the line pq
+      default: {                                                                 // an ulp off it
+        const auto on = on_line(p, q, mode);
+        const double x = CGAL::to_double(on.x());
+        r = G::point(std::nextafter(x, HUGE_VAL), CGAL::to_double(on.y()));
+      }
+    }
+    const int want = static_cast<int>(CGAL::orientation(CGAL::exact(p), CGAL::exact(q), CGAL::exact(r)));
+    const int got = orientation_of_intervals(CGAL::approx(p), CGAL::approx(q), CGAL::approx(r));
+    zeros += want == 0;
+    if (got != 2) {
+      ++decided;
+      ASSERT_EQ(got, want) << i;
+    }
+    ASSERT_EQ(G::orientation(p, q, r), want) << i;
+    if (i / 4 % 3 == 0 && mode != 3) {
+      ++ordinary;
+      ordinary_decided += got != 2;
+    }
+  }
+  EXPECT_GT(zeros, 1000u) << "the draws must hit exact zeros";
+  EXPECT_GT(decided, 2000u);
+  EXPECT_GT(ordinary_decided, ordinary * 99 / 100) << "the filter must settle what is far from degenerate";
+}
+
 // line_misses_box is a filter: "true" must be the exact answer (every corner of the box strictly
 // on one side of the line), on constructed points and on a coarse grid where lines pass through
 // corners; and it must say so for most boxes that the line clearly misses.

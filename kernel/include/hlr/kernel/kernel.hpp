@@ -8,6 +8,8 @@
 // runs on all three. Every robustness decision lives here, not in the algorithms.
 #pragma once
 
+#include <hlr/kernel/interval_orientation.hpp>
+
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -184,6 +186,10 @@ struct CgalGeometry {
       // Epick's orientation is exact on doubles, with a static filter and, for the collinear
       // cases the filter cannot settle, expansion arithmetic (Mpzf) instead of GMP rationals.
       const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b), &ic = CGAL::approx(c);
+      if (const int o = orientation_of_intervals(ia, ib, ic); o != 2) {
+        PredicateStats::add(PredicateFamily::orientation, DecidedBy::interval);
+        return o;
+      }
       const bool doubles = is_double(ia) && is_double(ib) && is_double(ic);
       if (PredicateStats::enabled) {
         CGAL::Protect_FPU_rounding<true> protect;

@@ -1,6 +1,7 @@
 // hlr kernel, mesh edges: which faces use each undirected edge of a mesh, and in which direction;
-// the mesh's components and which way each closed one faces. Shared by consolidation and
-// back-face removal (hidden_line), feature-edge extraction and import.
+// the mesh's components and which way each closed one faces; which faces are coplanar. Shared by
+// consolidation and back-face removal (hidden_line), feature-edge extraction and import, and
+// found once per mesh of a scene (MeshTopology).
 #pragma once
 
 #include <hlr/kernel/scene.hpp>
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -97,5 +99,16 @@ struct CoplanarGroups {
   std::vector<std::uint32_t> group;                          // per face: the lowest face of its group
 };
 CoplanarGroups coplanar_groups(const Mesh& mesh, const std::vector<EdgeUse>& uses);
+
+// All of the above for one mesh: facts of the model, the same in every view.
+struct MeshTopology {
+  std::vector<EdgeUse> uses;
+  ComponentSides sides;
+  CoplanarGroups groups;
+};
+MeshTopology analyse_mesh(const Mesh& mesh);
+// The mesh's topology as its Scene keeps it (Mesh::topology), or for a mesh that no Scene holds,
+// found now.
+std::shared_ptr<const MeshTopology> topology_of(const Mesh& mesh);
 
 }  // namespace hlr

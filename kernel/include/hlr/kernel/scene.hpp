@@ -49,6 +49,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -68,6 +69,8 @@ struct SourceCurve {
   double radius = 0;
   std::vector<std::uint32_t> vertices;
 };
+
+struct MeshTopology;  // mesh_edges.hpp
 
 struct Mesh {
   std::string file;                               // path as given
@@ -89,6 +92,10 @@ struct Mesh {
   // the visible and hidden runs of their polylines with the true centre and radius.
   std::vector<SourceCurve> source_curves;
   std::string name;  // the part's name where the source names it (a STEP product), else empty
+  // Its edge uses, components and coplanar groups (mesh_edges.hpp: topology_of), found once by
+  // Scene::add for every stage and view of the scene; null for a mesh that no Scene holds.
+  // Whatever changes a held mesh's faces or vertices must reset it.
+  std::shared_ptr<const MeshTopology> topology;
 };
 
 struct ImportReport {

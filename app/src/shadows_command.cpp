@@ -134,14 +134,23 @@ int run(const ShadowsOptions& options) {
   if (options.cull == "fuzzy" && !shadow_options.cull) std::cout << " (.json and .svg polygons depend on every face sorted)";
   std::cout << ", " << result.cull_groups.size() << (result.cull_groups.size() == 1 ? " group" : " groups")
             << " of directional lights\n";
-  for (std::size_t g = 0; g < result.cull_groups.size() && shadow_options.cull; ++g) {
+  double fuzzy = 0, solve = 0;
+  for (std::size_t g = 0; g < result.cull_groups.size(); ++g) {
     const auto& group = result.cull_groups[g];
-    std::cout << "  group " << g << ": lights " << group.first << " to " << group.first + group.count - 1 << ", "
-              << group.culled << " of " << group.patches << " faces culled";
-    if (group.parts > 1) std::cout << " (the most of its " << group.parts << " parts)";
-    std::cout << "; fuzzy pass" << (group.fuzzy_passes == 1 ? " " : "es ") << group.fuzzy_seconds << " s, lights "
-              << group.solve_seconds << " s\n";
+    fuzzy += group.fuzzy_seconds, solve += group.solve_seconds;
+    if (result.cull_groups.size() > 8 && (!shadow_options.cull || group.culled == 0)) continue;
+    std::cout << "  group " << g << ": lights " << group.first << " to " << group.first + group.count - 1;
+    if (shadow_options.cull) {
+      std::cout << ", " << group.culled << " of " << group.patches << " faces culled";
+      if (group.parts > 1) std::cout << " (the most of its " << group.parts << " parts)";
+      std::cout << "; fuzzy pass" << (group.fuzzy_passes == 1 ? " " : "es ") << group.fuzzy_seconds << " s";
+    }
+    std::cout << ", lights " << group.solve_seconds << " s\n";
   }
+  if (!result.cull_groups.empty())
+    std::cout << "  directional lights solved in " << solve << " s (light views " << result.times.views << " s, sorts "
+              << result.times.sort << " s, map back " << result.times.map_back << " s)" << (shadow_options.cull ? ", fuzzy passes " : "")
+              << (shadow_options.cull ? std::to_string(fuzzy) + " s" : "") << '\n';
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
   return kExitOk;
 }

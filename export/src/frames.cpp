@@ -96,6 +96,18 @@ FrameSet draw_frames(const Scene& scene, const std::vector<View>& views, const F
   if (options.raster > 0) out.rasters.resize(views.size());
   // The culled faces change no drawing of the exact kernel, and the others ignore them.
   const bool cull = options.cull == CullMode::fuzzy && options.raster == 0 && options.draw.kernel == KernelKind::exact;
+  // Raster frames share one view-plane window, the union of every frame's own box, so that they
+  // have one pixel size and a model point at rest keeps its pixel.
+  hidden_line::RasterOptions raster;
+  raster.resolution = options.raster;
+  if (options.raster > 0) {
+    std::array<double, 4> window{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (const View& view : views) {
+      const auto e = hidden_line::raster_extent(scene.meshes, view);
+      window = {std::min(window[0], e[0]), std::min(window[1], e[1]), std::max(window[2], e[2]), std::max(window[3], e[3])};
+    }
+    if (!views.empty()) raster.window = window;
+  }
   for (std::size_t g = 0; g < out.groups.size(); ++g) {
     FrameGroup& group = out.groups[g];
     group.patches = scene.input.faces;
@@ -121,7 +133,7 @@ FrameSet draw_frames(const Scene& scene, const std::vector<View>& views, const F
         if (parts[p].culled > 0) draw.culled_faces = &parts[p].faces;
         LineDrawing& frame = out.frames[i];
         if (options.raster > 0) {
-          RasterRun run = draw_raster(scene, views[i], options.raster, draw, &intersections);
+          RasterRun run = draw_raster(scene, views[i], raster, draw, &intersections);
           frame = std::move(run.drawing);
           out.rasters[i] = std::move(run.raster);
         } else {

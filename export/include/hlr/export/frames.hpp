@@ -48,7 +48,9 @@ struct FramesOptions {
   // Consecutive eyes form a group while the box around them is no longer than this along any
   // axis; 0: a tenth of the scene's bounding-box diagonal (a larger box culls little).
   double group_extent = 0;
-  int raster = 0;  // pixels: draw each frame by the raster path instead (no culling there)
+  // Pixels: draw each frame by the raster path instead (no culling there), every frame an image of
+  // one view-plane window (RasterOptions::window: the union of the frames' raster_extent).
+  int raster = 0;
   // With culling: solve every frame a second time without it, for FrameGroup::unculled_seconds
   // (what the culling saved, measured rather than guessed; the run takes about twice as long).
   bool cull_report = false;

@@ -169,14 +169,21 @@ std::vector<SheetLines> frames_sheet(const std::vector<LineDrawing>& frames, con
       }
     return all;
   };
+  // Each frame alone, at the scale that fits it (sheet_lines ends with sheet_lines_at there): a
+  // frame whose own scale is the common one keeps that sheet instead of merging its segments again.
+  const std::vector<SheetLines> own = [&] {
+    std::vector<SheetLines> out;
+    for (const LineDrawing& f : frames) out.push_back(sheet_lines(f, style));
+    return out;
+  }();
   std::vector<SheetLines> sheets;
-  for (const LineDrawing& f : frames) sheets.push_back(sheet_lines(f, style));
-  std::optional<Bounds> all = union_of(sheets);
+  std::optional<Bounds> all = union_of(own);
   double scale = style.scale ? *style.scale : all ? fitting_scale(*all, style) : style.unit_mm;
   const detail::Box area = detail::frame_of(style.sheet, detail::draw_title_height).area;
   for (int step = 0;; ++step) {
     sheets.clear();
-    for (const LineDrawing& f : frames) sheets.push_back(sheet_lines_at(f, style, scale));
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      sheets.push_back(own[i].scale == scale ? own[i] : sheet_lines_at(frames[i], style, scale));
     all = union_of(sheets);
     if (!all) break;
     const bool fits = all->width() * scale <= area.width() * (1 + 1e-12) && all->height() * scale <= area.height() * (1 + 1e-12);

@@ -1,5 +1,5 @@
 // `hlr shadows MESH... (--sun DX,DY,DZ | --sun-at TIME --site LAT,LON[,NORTH] | --point-light X,Y,Z)...
-//  [--union]
+//  [--union] [--cull fuzzy|none]
 //  -o OUT.json|OUT.csv|OUT.svg`: the options, then hidden_line::cast_shadows, then the writers.
 #include "atomic_file.hpp"
 #include "errors.hpp"
@@ -13,6 +13,7 @@
 #include <hlr/kernel/sun.hpp>
 
 #include <charconv>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -29,6 +30,7 @@ struct ShadowsOptions {
   std::vector<std::string> suns, sun_at, point_lights;
   std::string site;
   bool union_shadows = false;
+  std::string cull = "fuzzy";
   std::vector<std::string> outputs;
   int threads = 0;
   RunLimits limits;
@@ -106,9 +108,14 @@ int run(const ShadowsOptions& options) {
   shadow_options.union_shadows = options.union_shadows;
   shadow_options.light_views = std::find(formats.begin(), formats.end(), Format::svg) != formats.end();
   shadow_options.progress = run.progress();
+  // The culled faces change no face's lit area, but the polygons of a .json or .svg (the area
+  // sort's fragments) depend on every polygon sorted: culling only where the outputs are areas.
+  const bool areas_only = std::all_of(formats.begin(), formats.end(), [](Format f) { return f == Format::csv; });
+  shadow_options.cull = options.cull == "fuzzy" && areas_only;
   const hidden_line::ShadowResult result = hidden_line::cast_shadows(scene, lights.lights, shadow_options);
 
-  const exporter::ShadowsDocument doc{input, scene.meshes, lights.lights, lights.labels, result, read};
+  exporter::ShadowsDocument doc{input, scene.meshes, lights.lights, lights.labels, result, read};
+  doc.cull = shadow_options.cull;
   for (std::size_t i = 0; i < files.size(); ++i)
     files[i].write(formats[i] == Format::json  ? exporter::shadows_json(doc)
                    : formats[i] == Format::csv ? exporter::shadows_csv(doc)
@@ -123,6 +130,27 @@ int run(const ShadowsOptions& options) {
   std::cout << "hlr shadows: " << input.faces << " faces, " << result.sources.size() << " sources, "
             << lights.lights.size() << " light(s); sunlit " << (area > 0 ? 100 * lit / area : 0.0)
             << "% of the surface in " << result.times.total << " s\n";
+  std::cout << "  cull " << (shadow_options.cull ? "fuzzy" : "none");
+  if (options.cull == "fuzzy" && !shadow_options.cull) std::cout << " (.json and .svg polygons depend on every face sorted)";
+  std::cout << ", " << result.cull_groups.size() << (result.cull_groups.size() == 1 ? " group" : " groups")
+            << " of directional lights\n";
+  double fuzzy = 0, solve = 0;
+  for (std::size_t g = 0; g < result.cull_groups.size(); ++g) {
+    const auto& group = result.cull_groups[g];
+    fuzzy += group.fuzzy_seconds, solve += group.solve_seconds;
+    if (result.cull_groups.size() > 8 && (!shadow_options.cull || group.culled == 0)) continue;
+    std::cout << "  group " << g << ": lights " << group.first << " to " << group.first + group.count - 1;
+    if (shadow_options.cull) {
+      std::cout << ", " << group.culled << " of " << group.patches << " faces culled";
+      if (group.parts > 1) std::cout << " (the most of its " << group.parts << " parts)";
+      std::cout << "; fuzzy pass" << (group.fuzzy_passes == 1 ? " " : "es ") << group.fuzzy_seconds << " s";
+    }
+    std::cout << ", lights " << group.solve_seconds << " s\n";
+  }
+  if (!result.cull_groups.empty())
+    std::cout << "  directional lights solved in " << solve << " s (light views " << result.times.views << " s, sorts "
+              << result.times.sort << " s, map back " << result.times.map_back << " s)" << (shadow_options.cull ? ", fuzzy passes " : "")
+              << (shadow_options.cull ? std::to_string(fuzzy) + " s" : "") << '\n';
   for (const auto& out : options.outputs) std::cout << "wrote " << out << '\n';
   return kExitOk;
 }
@@ -159,6 +187,14 @@ Subcommand add_shadows_command(CLI::App& parent) {
                   "each light); may be given several times")
       ->required()
       ->type_name("OUT");
+  cmd->add_option("--cull", options->cull,
+                  "fuzzy: leave out of the light views of each group of sun directions the faces none of them "
+                  "can light (Lim's fuzzy culling; the same lit areas), where every output is .csv (the polygons "
+                  "of .json and .svg depend on every face sorted: those runs solve every face); none: solve every "
+                  "face")
+      ->check(CLI::IsMember({"fuzzy", "none"}))
+      ->capture_default_str()
+      ->type_name("MODE");
   add_threads_option(*cmd, options->threads);
   add_limit_options(*cmd, options->limits);
   add_cad_options(*cmd, options->cad);

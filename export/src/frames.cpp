@@ -70,63 +70,17 @@ std::vector<View> frame_views(const std::vector<Vec3>& eyes, const Vec3& target,
 
 std::vector<FrameGroup> group_eyes(const std::vector<View>& views, double extent) {
   std::vector<FrameGroup> groups;
-  Vec3 lo{}, hi{};
-  for (std::size_t i = 0; i < views.size(); ++i) {
-    const Vec3& e = *views[i].eye;
-    bool fits = !groups.empty();
-    if (fits)
-      for (int k = 0; k < 3; ++k) fits = fits && std::max(hi[k], e[k]) - std::min(lo[k], e[k]) <= extent;
-    if (!fits) {
-      groups.push_back({i, 0});
-      lo = hi = e;
-    }
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], e[k]), hi[k] = std::max(hi[k], e[k]);
-    ++groups.back().count;
-  }
+  for (const hidden_line::ViewRun& run : hidden_line::group_views(views, extent)) groups.push_back({run.first, run.count});
   return groups;
 }
 
 std::vector<CullPart> cull_parts(const Scene& scene, const std::vector<View>& views, std::vector<std::size_t> frames,
                                  const hidden_line::FuzzyOptions& options, StopToken stop, FrameGroup& group) {
-  // One pass over the eyes `frames`.
-  auto pass = [&](const std::vector<std::size_t>& eyes) {
-    std::vector<View> members;
-    for (std::size_t i : eyes) members.push_back(views[i]);
-    hidden_line::FuzzyCull cull = hidden_line::fuzzy_cull(scene.meshes, members, options, stop);
-    ++group.fuzzy_passes;
-    group.fuzzy_seconds += cull.seconds;
-    group.patches = cull.patches;
-    CullPart part{eyes, cull.culled_faces, cull.culled_faces - cull.culled_back_faces, {}};
-    if (cull.culled_faces > 0) part.faces = std::move(cull.culled);
-    return part;
-  };
-  // The halves of `eyes` on either side of the middle of their box's longest axis (both non-empty
-  // unless every eye is the same point).
-  auto halves = [&](const std::vector<std::size_t>& eyes) {
-    Vec3 lo = *views[eyes.front()].eye, hi = lo;
-    for (std::size_t i : eyes)
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], (*views[i].eye)[k]), hi[k] = std::max(hi[k], (*views[i].eye)[k]);
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-    const double middle = lo[axis] + (hi[axis] - lo[axis]) / 2;
-    std::array<std::vector<std::size_t>, 2> out;
-    for (std::size_t i : eyes) out[(*views[i].eye)[axis] > middle].push_back(i);
-    return out;
-  };
-  // Once: the passes cost about what a frame's area sort saves, and a scene where nothing is
-  // hidden would pay one per eye for deeper splits (the rooms of BENCHMARKS.md: 7 passes for 5
-  // eyes, 0.9 s against 0.1 s saved).
-  std::vector<CullPart> parts;
-  CullPart whole = pass(frames);
-  const auto [a, b] = whole.useful > 0 || frames.size() < 2 ? std::array<std::vector<std::size_t>, 2>{} : halves(frames);
-  if (a.empty() || b.empty()) {
-    parts.push_back(std::move(whole));
-  } else {
-    parts.push_back(pass(a));
-    parts.push_back(pass(b));
-  }
-  std::sort(parts.begin(), parts.end(), [](const CullPart& x, const CullPart& y) { return x.frames < y.frames; });
+  hidden_line::CullPasses passes;
+  auto parts = hidden_line::cull_parts(scene.meshes, views, std::move(frames), options, stop, passes);
+  group.fuzzy_passes += passes.passes;
+  group.fuzzy_seconds += passes.seconds;
+  group.patches = passes.patches;
   return parts;
 }
 
@@ -142,6 +96,18 @@ FrameSet draw_frames(const Scene& scene, const std::vector<View>& views, const F
   if (options.raster > 0) out.rasters.resize(views.size());
   // The culled faces change no drawing of the exact kernel, and the others ignore them.
   const bool cull = options.cull == CullMode::fuzzy && options.raster == 0 && options.draw.kernel == KernelKind::exact;
+  // Raster frames share one view-plane window, the union of every frame's own box, so that they
+  // have one pixel size and a model point at rest keeps its pixel.
+  hidden_line::RasterOptions raster;
+  raster.resolution = options.raster;
+  if (options.raster > 0) {
+    std::array<double, 4> window{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (const View& view : views) {
+      const auto e = hidden_line::raster_extent(scene.meshes, view);
+      window = {std::min(window[0], e[0]), std::min(window[1], e[1]), std::max(window[2], e[2]), std::max(window[3], e[3])};
+    }
+    if (!views.empty()) raster.window = window;
+  }
   for (std::size_t g = 0; g < out.groups.size(); ++g) {
     FrameGroup& group = out.groups[g];
     group.patches = scene.input.faces;
@@ -159,7 +125,7 @@ FrameSet draw_frames(const Scene& scene, const std::vector<View>& views, const F
     group.parts = parts.size();
     for (const CullPart& part : parts) group.culled = std::max(group.culled, part.culled);
     for (std::size_t p = 0; p < parts.size(); ++p)
-      for (std::size_t i : parts[p].frames) {
+      for (std::size_t i : parts[p].views) {
         options.draw.progress.check();
         options.draw.progress.report("frame " + std::to_string(i + 1) + " of " + std::to_string(views.size()));
         DrawOptions draw = options.draw;
@@ -167,7 +133,7 @@ FrameSet draw_frames(const Scene& scene, const std::vector<View>& views, const F
         if (parts[p].culled > 0) draw.culled_faces = &parts[p].faces;
         LineDrawing& frame = out.frames[i];
         if (options.raster > 0) {
-          RasterRun run = draw_raster(scene, views[i], options.raster, draw, &intersections);
+          RasterRun run = draw_raster(scene, views[i], raster, draw, &intersections);
           frame = std::move(run.drawing);
           out.rasters[i] = std::move(run.raster);
         } else {
@@ -203,14 +169,21 @@ std::vector<SheetLines> frames_sheet(const std::vector<LineDrawing>& frames, con
       }
     return all;
   };
+  // Each frame alone, at the scale that fits it (sheet_lines ends with sheet_lines_at there): a
+  // frame whose own scale is the common one keeps that sheet instead of merging its segments again.
+  const std::vector<SheetLines> own = [&] {
+    std::vector<SheetLines> out;
+    for (const LineDrawing& f : frames) out.push_back(sheet_lines(f, style));
+    return out;
+  }();
   std::vector<SheetLines> sheets;
-  for (const LineDrawing& f : frames) sheets.push_back(sheet_lines(f, style));
-  std::optional<Bounds> all = union_of(sheets);
+  std::optional<Bounds> all = union_of(own);
   double scale = style.scale ? *style.scale : all ? fitting_scale(*all, style) : style.unit_mm;
   const detail::Box area = detail::frame_of(style.sheet, detail::draw_title_height).area;
   for (int step = 0;; ++step) {
     sheets.clear();
-    for (const LineDrawing& f : frames) sheets.push_back(sheet_lines_at(f, style, scale));
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      sheets.push_back(own[i].scale == scale ? own[i] : sheet_lines_at(frames[i], style, scale));
     all = union_of(sheets);
     if (!all) break;
     const bool fits = all->width() * scale <= area.width() * (1 + 1e-12) && all->height() * scale <= area.height() * (1 + 1e-12);

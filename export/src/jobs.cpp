@@ -169,6 +169,14 @@ LineDrawing draw_lines(const Scene& scene, const View& view, const DrawOptions& 
 
 RasterRun draw_raster(const Scene& scene, const View& view, int resolution, const DrawOptions& options,
                       const SceneIntersections* shared) {
+  hidden_line::RasterOptions raster;
+  raster.resolution = resolution;
+  return draw_raster(scene, view, raster, options, shared);
+}
+
+RasterRun draw_raster(const Scene& scene, const View& view, const hidden_line::RasterOptions& raster,
+                      const DrawOptions& options, const SceneIntersections* shared) {
+  const int resolution = raster.resolution;
   using hidden_line::seconds_since;
   std::unique_ptr<SceneIntersections> own;
   const SceneIntersections& intersections = intersections_of(scene, options, shared, own);
@@ -178,8 +186,6 @@ RasterRun draw_raster(const Scene& scene, const View& view, int resolution, cons
   options.progress.check();
   options.progress.report("Z-buffer at " + std::to_string(resolution) + " pixels");
   auto mark = std::chrono::steady_clock::now();
-  hidden_line::RasterOptions raster;
-  raster.resolution = resolution;
   run.raster = std::make_unique<hidden_line::RasterDrawing>(scene.meshes, view, intersections.segments(),
                                                             line_options(options), raster);
   const double zbuffer = seconds_since(mark);

@@ -126,6 +126,15 @@ std::string shadows_json(const ShadowsDocument& doc) {
                     {"sort", t.sort},
                     {"map_back", t.map_back},
                     {"union", t.unions}}}};
+  json groups = json::array();
+  for (const auto& g : r.cull_groups)
+    groups.push_back({{"lights", {g.first, g.first + g.count - 1}},
+                      {"patches", g.patches},
+                      {"culled", doc.cull ? g.culled : 0},
+                      {"parts", g.parts},
+                      {"fuzzy_seconds", g.fuzzy_seconds},
+                      {"solve_seconds", g.solve_seconds}});
+  out["stats"]["cull"] = {{"mode", doc.cull ? "fuzzy" : "none"}, {"groups", std::move(groups)}};
   return out.dump(1) + "\n";
 }
 

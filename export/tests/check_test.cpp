@@ -3,6 +3,7 @@
 // patterns of the P-buffer image, and the raster classification's errors bounded by pixel size on
 // the fixtures in a general view.
 #include <hlr/export/check.hpp>
+#include <hlr/export/frames.hpp>
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -103,6 +104,86 @@ std::vector<Mesh> diagonal_scene(double shift) {
   m.faces = {{0, 1, 2, 3}, {4, 6, 5}};
   m.face_index = {0, 1};
   return {m};
+}
+
+// Two closed boxes side by side, A at x in [0, 1] and B at x in [3, 4] (one mesh each).
+std::vector<Mesh> two_boxes() {
+  auto box = [](double x0, const char* name) {
+    Mesh m;
+    m.file = name;
+    for (int c = 0; c < 8; ++c) m.vertices.push_back({x0 + (c & 1 ? 1.0 : 0.0), c & 2 ? 1.0 : 0.0, c & 4 ? 1.0 : 0.0});
+    const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+      m.face_index.push_back(std::uint32_t(m.faces.size()));
+      m.faces.push_back({q[0], q[1], q[2], q[3]});
+    }
+    return m;
+  };
+  return {box(0, "a"), box(3, "b")};
+}
+
+TEST(RasterWindow, TheImageShowsTheWindowAndClipsTheRest) {
+  View view;
+  named_view("iso", view);
+  const std::vector<Mesh> both = two_boxes(), a_only{both[0]};
+  hidden_line::RasterOptions fit;
+  fit.resolution = 200;
+  const hidden_line::RasterDrawing a(a_only, view, {}, {}, fit);
+  // The window of box A alone: B, beside it, is clipped: no pixel, no line sample of it.
+  hidden_line::RasterOptions windowed = fit;
+  windowed.window = hidden_line::raster_extent(a_only, view);
+  const hidden_line::RasterDrawing both_in_a(both, view, {}, {}, windowed);
+  const auto& g = both_in_a.grid();
+  const auto& w = *windowed.window;
+  const hidden_line::RasterGrid expected = hidden_line::raster_grid(w[0], w[1], w[2], w[3], 200);
+  EXPECT_EQ(g.width, expected.width);
+  EXPECT_EQ(g.height, expected.height);
+  EXPECT_EQ(g.pixel, expected.pixel);
+  EXPECT_EQ(g.left, expected.left);
+  EXPECT_EQ(g.top, expected.top);
+  EXPECT_EQ(g.width, a.grid().width);
+  EXPECT_EQ(g.pixel, a.grid().pixel);
+  std::size_t b_pieces = 0;
+  for (const auto& line : both_in_a.classify().lines)
+    if (line.mesh == 1) b_pieces += line.pieces.size();
+  EXPECT_EQ(b_pieces, 0u);
+  const auto image = both_in_a.pbuffer(hidden_line::DashPattern::arc_length);
+  EXPECT_EQ(image.rgb, a.pbuffer(hidden_line::DashPattern::arc_length).rgb);
+  // Without the window the image fits both boxes, at another scale.
+  const hidden_line::RasterDrawing both_fit(both, view, {}, {}, fit);
+  EXPECT_GT(both_fit.grid().pixel, g.pixel);
+}
+
+// Raster frames of an orbit share one window (frames.hpp): one pixel size, and the target, at
+// the image plane's origin in every frame, in one pixel; each frame's own box would differ.
+TEST(RasterWindow, FramesShareOneWindow) {
+  Scene scene;
+  scene.meshes = two_boxes();
+  for (const Mesh& m : scene.meshes) scene.input.faces += m.faces.size(), scene.input.vertices += m.vertices.size();
+  const Vec3 target{0.5, 0.5, 0.5};  // box A's centre; box B lies off to one side
+  const auto views = frame_views(orbit_eyes(target, 4, 30, 12), target);
+  FramesOptions options;
+  options.raster = 128;
+  const FrameSet set = draw_frames(scene, views, options);
+  ASSERT_EQ(set.rasters.size(), 4u);
+  const hidden_line::RasterGrid& first = set.rasters[0]->grid();
+  bool own_boxes_differ = false;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const hidden_line::RasterGrid& g = set.rasters[i]->grid();
+    EXPECT_EQ(g.width, first.width) << i;
+    EXPECT_EQ(g.height, first.height) << i;
+    EXPECT_EQ(g.pixel, first.pixel) << i;
+    EXPECT_EQ(int(g.column(0)), int(first.column(0))) << i;
+    EXPECT_EQ(int(g.row(0)), int(first.row(0))) << i;
+    const auto image = set.rasters[i]->pbuffer(hidden_line::DashPattern::arc_length);
+    const auto png = read_png(png_document(image));
+    EXPECT_EQ(png.width, first.width);
+    EXPECT_EQ(png.height, first.height);
+    const auto own = hidden_line::raster_extent(scene.meshes, views[i]);
+    const auto e0 = hidden_line::raster_extent(scene.meshes, views[0]);
+    own_boxes_differ = own_boxes_differ || own != e0;
+  }
+  EXPECT_TRUE(own_boxes_differ);
 }
 
 TEST(PBuffer, PaperPatternBreaksUpDiagonalsWhereArcLengthDashesDoNot) {

@@ -9,6 +9,8 @@
 #include <hlr/hidden_line/raster.hpp>
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -48,19 +50,45 @@ struct DepthBuffer {
   std::vector<float> depth;
   std::vector<std::uint32_t> item;
 
-  // Throws std::invalid_argument for a resolution outside 16..8192.
-  DepthBuffer(const std::vector<Mesh>& meshes, const View& view, int resolution) : frame(view, meshes) {
+  // Throws std::invalid_argument for a resolution outside 16..8192. With a window (RasterOptions),
+  // the grid lies over it instead of over the scene's box.
+  DepthBuffer(const std::vector<Mesh>& meshes, const View& view, int resolution,
+              const std::optional<std::array<double, 4>>& window = std::nullopt)
+      : frame(view, meshes) {
     if (resolution < 16 || resolution > 8192)
       throw std::invalid_argument("raster resolution " + std::to_string(resolution) + " is outside 16..8192 pixels");
+    project(meshes);
+    make_faces(meshes);
+    make_grid(resolution, window);
+    fill_zbuffer();
+  }
+
+  // Only the projection (cuts, points) and its box, for raster_extent.
+  struct ProjectOnly {};
+  DepthBuffer(const std::vector<Mesh>& meshes, const View& view, ProjectOnly) : frame(view, meshes) { project(meshes); }
+
+  void project(const std::vector<Mesh>& meshes) {
     for (const Mesh& mesh : meshes) {
       const NearCut<DoubleKernel>& cut = cuts.emplace_back(mesh, frame);
       auto& pts = points.emplace_back();
       pts.reserve(cut.points().size());
       for (const auto& p : cut.points()) pts.push_back(orthonormal(p));
     }
-    make_faces(meshes);
-    make_grid(resolution);
-    fill_zbuffer();
+  }
+
+  // The box of the points not behind the near plane: x0, y0, x1, y1, z0, z1 (all zero for none).
+  std::array<double, 6> box() const {
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0, z0 = x0, z1 = -x0;
+    for (std::size_t m = 0; m < points.size(); ++m)
+      for (std::uint32_t v = 0; v < points[m].size(); ++v) {
+        if (cuts[m].behind(v)) continue;
+        const Vec3& p = points[m][v];
+        x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
+        y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+        z0 = std::min(z0, p[2]), z1 = std::max(z1, p[2]);
+      }
+    if (!(x0 <= x1)) x0 = x1 = y0 = y1 = z0 = z1 = 0;  // no vertex: an empty image
+    return {x0, y0, x1, y1, z0, z1};
   }
 
   Vec3 orthonormal(const ViewPoint<DoubleKernel>& p) const {
@@ -105,18 +133,10 @@ struct DepthBuffer {
     }
   }
 
-  void make_grid(int resolution) {
-    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0, z0 = x0, z1 = -x0;
-    for (std::size_t m = 0; m < points.size(); ++m)
-      for (std::uint32_t v = 0; v < points[m].size(); ++v) {
-        if (cuts[m].behind(v)) continue;
-        const Vec3& p = points[m][v];
-        x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
-        y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
-        z0 = std::min(z0, p[2]), z1 = std::max(z1, p[2]);
-      }
-    if (!(x0 <= x1)) x0 = x1 = y0 = y1 = z0 = z1 = 0;  // no vertex: an empty image
-    grid = raster_grid(x0, y0, x1, y1, resolution);
+  void make_grid(int resolution, const std::optional<std::array<double, 4>>& window) {
+    const auto [x0, y0, x1, y1, z0, z1] = box();
+    grid = window ? raster_grid((*window)[0], (*window)[1], (*window)[2], (*window)[3], resolution)
+                  : raster_grid(x0, y0, x1, y1, resolution);
     const double pixel = grid.pixel;
     z_min = z0;
     z_range = z1 > z0 ? z1 - z0 : 1;

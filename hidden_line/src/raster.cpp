@@ -42,13 +42,19 @@ RasterGrid raster_grid(double x0, double y0, double x1, double y1, int resolutio
   return grid;
 }
 
+std::array<double, 4> raster_extent(const std::vector<Mesh>& meshes, const View& view) {
+  const detail::DepthBuffer projection(meshes, view, detail::DepthBuffer::ProjectOnly{});
+  const auto b = projection.box();
+  return {b[0], b[1], b[2], b[3]};
+}
+
 // The Z-buffer (depth_buffer.hpp) and the lines to classify against it.
 struct RasterDrawing::Impl : detail::DepthBuffer {
   std::vector<RasterLine> lines;
 
   Impl(const std::vector<Mesh>& meshes, const View& view, const std::vector<IntersectionSegment>& intersections,
        const LineOptions& options, const RasterOptions& raster)
-      : DepthBuffer(meshes, view, raster.resolution) {
+      : DepthBuffer(meshes, view, raster.resolution, raster.window) {
     make_lines(meshes, view, intersections, options);
   }
 

@@ -326,7 +326,8 @@ class LightSolver {
 
   // Solves one light in its views: the light's one view (light_view_along, point_light_view), or
   // the pyramids of the cube around a point light (cube_views), each clipped to its square.
-  void run(const Light& light, const std::vector<LightPyramid>& views) {
+  void run(const Light& light, const std::vector<LightPyramid>& views, const std::vector<std::vector<bool>>* culled = nullptr) {
+    culled_ = culled;
     if (light.kind == Light::point) eye_ = Vec3FT{FT(light.vector[0]), FT(light.vector[1]), FT(light.vector[2])};
     const Vec3& dir = light.vector;
     const Vec3FT d{FT(dir[0]), FT(dir[1]), FT(dir[2])};
@@ -351,6 +352,12 @@ class LightSolver {
         stage_ = "light " + std::to_string(k_ + 1) + " of " + std::to_string(light_count_);
       solve_view(views[i], picture);
     }
+    // Each face's lit area rounded once, from its exact sum over the pieces (and the views).
+    auto& lit_area = result_.face_lit_area.back();
+    const auto& lit_area2 = result_.face_lit_area2.back();
+    for (std::size_t mi = 0; mi < meshes_.size(); ++mi)
+      for (std::size_t f = 0; f < meshes_[mi].faces.size(); ++f)
+        lit_area[mi][f] = G::to_double(lit_area2[mi][f]) / 2 * model_.factor[model_.face_source[mi][f]];
     if (options_.light_views) {
       if (!views.empty() && views.front().axis >= 0) {
         picture.view = views.front().view;
@@ -394,6 +401,7 @@ class LightSolver {
     SourceOptions source_options;
     source_options.remove_back_faces = true;
     source_options.consolidate = true;
+    source_options.culled = culled_;
     sources_ = build_sources<K>(meshes_, frame, source_options);
     if (pyramid.axis >= 0) clip_sources_to_square();
     result_.times.views += seconds_since(mark);
@@ -654,7 +662,6 @@ class LightSolver {
     }
   }
   void add_face_areas() {
-    auto& lit_area = result_.face_lit_area.back();
     auto& lit_area2 = result_.face_lit_area2.back();
     for (std::uint32_t m = 0; m < model_.sources.size(); ++m) {
       const ShadowSource& s = model_.sources[m];
@@ -663,7 +670,6 @@ class LightSolver {
       auto add = [&](std::uint32_t f, const ShadowPolygon& p) {
         const FT a2 = twice_area_seen_from_front(p, s.normal, s.axis);
         lit_area2[s.mesh][f] += a2;
-        lit_area[s.mesh][f] += G::to_double(a2) / 2 * model_.factor[m];
         if (options_.union_shadows) face_lit_uv[s.mesh][f].push_back(uv_polygon(p, s));
       };
       if (s.faces.size() == 1) {
@@ -741,6 +747,7 @@ class LightSolver {
   std::optional<clip::Polygon<K>> square_;  // a cube view: its pyramid's square [-1, 1]^2
   std::vector<std::size_t> lit_before_;  // per model source: its lit polygons from earlier views
   std::string stage_;                    // "light 2 of 7" (", view 3 of 6")
+  const std::vector<std::vector<bool>>* culled_ = nullptr;  // faces left out of the light view
 };
 
 }  // namespace
@@ -951,11 +958,65 @@ ShadowResult cast_shadows(const std::vector<Mesh>& meshes, const std::vector<Lig
   ModelSources model = model_sources(meshes);
   result.times.sources = seconds_since(start);
 
+  // Sun studies: the directional lights in groups, and with culling the faces no direction of a
+  // group's part can light, for every light of that part.
+  std::vector<CullPart> parts;
+  std::vector<std::ptrdiff_t> part_of(lights.size(), -1);
+  std::vector<std::ptrdiff_t> group_of(lights.size(), -1);
+  {
+    std::vector<View> directional;
+    std::vector<std::size_t> light_of;
+    auto flush = [&] {
+      for (const ViewRun& run : group_views(directional, options.cull_extent)) {
+        ShadowCullGroup group;
+        group.first = light_of[run.first];
+        group.count = run.count;
+        group.patches = 0;
+        for (const Mesh& mesh : meshes) group.patches += mesh.faces.size();
+        for (std::size_t i = 0; i < run.count; ++i) group_of[light_of[run.first + i]] = std::ptrdiff_t(result.cull_groups.size());
+        if (options.cull) {
+          options.progress.check();
+          options.progress.report("fuzzy culling for lights " + std::to_string(group.first + 1) + " to " +
+                                  std::to_string(group.first + group.count));
+          std::vector<std::size_t> members(run.count);
+          for (std::size_t i = 0; i < run.count; ++i) members[i] = run.first + i;
+          CullPasses passes;
+          auto found = cull_parts(meshes, directional, members, options.fuzzy, options.progress.stop, passes);
+          group.parts = found.size();
+          group.fuzzy_passes = passes.passes;
+          group.fuzzy_seconds = passes.seconds;
+          for (auto& part : found) {
+            group.culled = std::max(group.culled, part.culled);
+            if (part.culled > 0)
+              for (std::size_t i : part.views) part_of[light_of[i]] = std::ptrdiff_t(parts.size());
+            parts.push_back(std::move(part));
+          }
+        }
+        result.cull_groups.push_back(group);
+      }
+      directional.clear();
+      light_of.clear();
+    };
+    for (std::size_t k = 0; k < lights.size(); ++k) {
+      if (lights[k].kind != Light::directional) {
+        flush();
+        continue;
+      }
+      directional.push_back(views[k].front().view);
+      light_of.push_back(k);
+    }
+    flush();
+  }
+
   // Per light, per mesh, per face: the lit polygons in the face's source's axis plane.
   std::vector<std::vector<std::vector<std::vector<clip::Polygon<K>>>>> lit_uv;
   for (std::size_t k = 0; k < lights.size(); ++k) {
+    const auto mark = Clock::now();
     LightSolver solver(meshes, model, result, k, lights.size(), options);
-    solver.run(lights[k], views[k]);
+    const std::vector<std::vector<bool>>* culled = part_of[k] >= 0 ? &parts[std::size_t(part_of[k])].faces : nullptr;
+    solver.run(lights[k], views[k], culled);
+    result.culled_faces.push_back(part_of[k] >= 0 ? parts[std::size_t(part_of[k])].culled : 0);
+    if (group_of[k] >= 0) result.cull_groups[std::size_t(group_of[k])].solve_seconds += seconds_since(mark);
     if (options.union_shadows) lit_uv.push_back(std::move(solver.face_lit_uv));
   }
 

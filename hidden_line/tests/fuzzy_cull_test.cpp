@@ -12,6 +12,8 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -170,6 +172,90 @@ TEST(FuzzyCull, NothingIsCulledWithoutOccluders) {
 
 // Random boxes and triangles in front of and behind random walls, seen from a random small box of
 // eyes: whatever is culled is unseen from each of them.
+
+// Orthographic views (a sun study's light views): the viewpoints are directions.
+View direction_view(const Vec3& d) {
+  View v;
+  v.name = "custom";
+  v.direction = d;
+  v.up = d[0] == 0 && d[1] == 0 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+  return v;
+}
+
+// As check_conservative, for a group of directions: every culled face unseen along each of them
+// and along `extra` random directions between them (convex combinations, inside the group's box of
+// ratios), and the same visible area with and without culling.
+std::size_t check_conservative_directions(const Scene& scene, const std::vector<View>& views, int extra,
+                                          std::uint32_t seed) {
+  const auto cull = fuzzy_cull(scene.meshes, views);
+  std::vector<View> checks = views;
+  std::mt19937 rng(seed);
+  for (int i = 0; i < extra; ++i) {
+    Vec3 d{0, 0, 0};
+    double total = 0;
+    std::vector<double> w;
+    for (std::size_t k = 0; k < views.size(); ++k) w.push_back(std::uniform_real_distribution<double>(0, 1)(rng)), total += w.back();
+    for (std::size_t k = 0; k < views.size(); ++k)
+      for (int c = 0; c < 3; ++c) d[c] += w[k] / total * views[k].direction[c] / std::abs(views[k].direction[2]);
+    checks.push_back(direction_view(d));
+  }
+  for (const View& view : checks) {
+    const auto seen = seen_faces(scene, view);
+    for (std::size_t m = 0; m < seen.size(); ++m)
+      for (std::size_t f = 0; f < seen[m].size(); ++f)
+        if (cull.culled[m][f] && seen[m][f]) {
+          ADD_FAILURE() << "face " << f << " of mesh " << m << " culled but seen along " << view.direction[0] << ","
+                        << view.direction[1] << "," << view.direction[2];
+          return cull.culled_faces;
+        }
+  }
+  for (const View& view : views) EXPECT_EQ(visible_area(scene, view, &cull.culled), visible_area(scene, view, nullptr));
+  return cull.culled_faces;
+}
+
+TEST(FuzzyCull, UnderARoofAlongAGroupOfDirections) {
+  // A roof slab over two boxes, lit from above at a slant: the boxes are culled, the ground around
+  // them and the roof are not.
+  const Scene scene = scene_of({boxes_mesh({{-10, -10, -1, 10, 10, 0}, {-4, -4, 4, 4, 4, 4.5}, {-1, -1, 0, 0, 0, 1}, {1, 0, 0, 2, 1, 2}})});
+  std::vector<View> views;
+  for (const Vec3& d : {Vec3{0.2, 0.1, -1}, Vec3{0.25, 0.05, -1}, Vec3{0.3, 0, -1}}) views.push_back(direction_view(d));
+  const std::size_t culled = check_conservative_directions(scene, views, 4, 3);
+  const auto cull = fuzzy_cull(scene.meshes, views);
+  for (int f = 0; f < 12; ++f) EXPECT_FALSE(cull.culled[0][f]) << f;  // the ground slab and the roof
+  for (int f = 12; f < 24; ++f) EXPECT_TRUE(cull.culled[0][f]) << f;  // the boxes under it
+  EXPECT_EQ(culled, 12u);
+  // Directions that do not run one way along any axis share no cube face: nothing is culled.
+  const auto none = fuzzy_cull(scene.meshes, {direction_view({1, 0, -1}), direction_view({-1, 0, 1})});
+  EXPECT_EQ(none.culled_faces, 0u);
+}
+
+RC_GTEST_PROP(FuzzyCullProperty, CulledFacesAreNeverLitAlongTheGroup, ()) {
+  // Roofs on the ground, boxes under and beside them, and a group of sun directions.
+  std::vector<Box3> boxes{{-12, -12, -1, 12, 12, 0}};
+  const int roofs = *rc::gen::inRange(1, 3), objects = *rc::gen::inRange(1, 6);
+  for (int i = 0; i < roofs; ++i) {
+    const double x = *rc::gen::inRange(-8, 4), y = *rc::gen::inRange(-8, 4), z = *rc::gen::inRange(2, 6);
+    boxes.push_back({x, y, z, x + *rc::gen::inRange(2, 8), y + *rc::gen::inRange(2, 8), z + 0.25});
+  }
+  for (int i = 0; i < objects; ++i) {
+    // Every other one under the first roof (which may or may not hide it).
+    const Box3& roof = boxes[1];
+    const double x = i % 2 ? *rc::gen::inRange(-8, 8) : roof.x0 + *rc::gen::inRange(0, 8) * (roof.x1 - roof.x0) / 8;
+    const double y = i % 2 ? *rc::gen::inRange(-8, 8) : roof.y0 + *rc::gen::inRange(0, 8) * (roof.y1 - roof.y0) / 8;
+    const double s = *rc::gen::inRange(1, 4) / 4.0;
+    boxes.push_back({x, y, 0, x + s, y + s, *rc::gen::inRange(1, 4) / 2.0});
+  }
+  const Scene scene = scene_of({boxes_mesh(boxes)});
+  const double a = *rc::gen::inRange(-8, 9) / 10.0, b = *rc::gen::inRange(-8, 9) / 10.0;
+  const double spread = *rc::gen::element(0.0, 0.05, 0.2, 0.5);
+  std::vector<View> views;
+  for (const auto& o : {std::array<double, 2>{0, 0}, {1, 0}, {0, 1}, {0.5, 0.5}})
+    views.push_back(direction_view({a + o[0] * spread, b + o[1] * spread, -1}));
+  const std::size_t culled = check_conservative_directions(scene, views, 2, 5);
+  RC_TAG(culled > 0 ? "culls" : "culls nothing");
+  RC_ASSERT(!::testing::Test::HasFailure());
+}
+
 RC_GTEST_PROP(FuzzyCullProperty, CulledFacesAreNeverSeen, ()) {
   const int walls = *rc::gen::inRange(1, 3);
   const int objects = *rc::gen::inRange(1, 6);

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -237,6 +239,30 @@ TEST_F(CliFrames, FuzzyCullingChangesNoByteOnRealScenes) {
       EXPECT_EQ(slurp(out("fuzzy_" + n + ".svg")), slurp(out("none_" + n + ".svg")));
     }
     for (const auto& name : outputs()) fs::remove(out(name));
+  }
+}
+
+// PNG frames share one view-plane window: one image size for every frame of an orbit, whose own
+// boxes differ (a box off to one side), and the JSON's raster grid is the same in each.
+TEST_F(CliFrames, PngFramesShareOneWindow) {
+  const fs::path mesh = input("two.off", boxes_off({{0, 0, 0, 1, 1, 1}, {3, 0, 0, 4, 1, 1}}));
+  const Outcome run = hlr({"frames", mesh.string(), "--orbit", "3", "--target", "0.5,0.5,0.5", "--raster", "160", "-o",
+                           (dir_ / "out" / "f_%d.png").string(), "-o", (dir_ / "out" / "f_%d.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // Width and height from the PNG's IHDR chunk (big-endian, bytes 16..23).
+  auto size = [](const std::string& png) {
+    auto be = [&](std::size_t at) {
+      return (std::uint32_t(std::uint8_t(png[at])) << 24) | (std::uint32_t(std::uint8_t(png[at + 1])) << 16) |
+             (std::uint32_t(std::uint8_t(png[at + 2])) << 8) | std::uint32_t(std::uint8_t(png[at + 3]));
+    };
+    return std::pair<std::uint32_t, std::uint32_t>{be(16), be(20)};
+  };
+  const auto first = size(slurp(out("f_0.png")));
+  EXPECT_EQ(std::max(first.first, first.second), 160u);
+  const json raster0 = json::parse(slurp(out("f_0.json"))).at("raster");
+  for (int i = 1; i < 3; ++i) {
+    EXPECT_EQ(size(slurp(out("f_" + std::to_string(i) + ".png"))), first) << i;
+    EXPECT_EQ(json::parse(slurp(out("f_" + std::to_string(i) + ".json"))).at("raster"), raster0) << i;
   }
 }
 

@@ -247,6 +247,54 @@ TEST_F(CliShadows, SunStudyGivesOneLightPerStep) {
   EXPECT_TRUE(doc.at("sources").at(0).contains("union_shadow_area"));
 }
 
+// A sun study's fuzzy culling: the faces no sun direction of a group can light are left out of its
+// light views, and the CSV (per-face lit areas, the union) is the same, byte for byte, as without
+// culling; a JSON output (polygons) turns culling off and says so in stats.cull.
+TEST_F(CliShadows, SunStudyCullingChangesNoByteOfTheCsv) {
+  const std::string room = (kShadowFixtures / "furnished_room.off").string();
+  const std::vector<std::string> study{"--sun-at", "2026-06-21T08:00+02:00/18:00/PT1H", "--site", "48.85,2.35", "--union"};
+  auto args = [&](std::vector<std::string> tail) {
+    std::vector<std::string> a{"shadows", room};
+    a.insert(a.end(), study.begin(), study.end());
+    a.insert(a.end(), tail.begin(), tail.end());
+    return a;
+  };
+  expect_failure(args({"--cull", "maybe", "-o", out("x.csv").string()}), 2, "hlr: ", "--cull");
+  const Outcome none = hlr(args({"--cull", "none", "-o", out("none.csv").string()}));
+  ASSERT_EQ(none.exit_code, 0) << none.err;
+  const Outcome fuzzy = hlr(args({"-o", out("fuzzy.csv").string()}));  // the default
+  ASSERT_EQ(fuzzy.exit_code, 0) << fuzzy.err;
+  EXPECT_EQ(slurp(out("none.csv")), slurp(out("fuzzy.csv")));
+  EXPECT_NE(none.out.find("cull none"), std::string::npos) << none.out;
+  EXPECT_NE(fuzzy.out.find("cull fuzzy"), std::string::npos) << fuzzy.out;
+  // Something was culled: every group line names its count, and the interior (floor and
+  // furniture, 220 of the 408 faces) is hidden from the summer sun.
+  std::size_t most = 0, groups = 0;
+  for (std::size_t at = fuzzy.out.find("faces culled"); at != std::string::npos; at = fuzzy.out.find("faces culled", at + 1)) {
+    const std::size_t line = fuzzy.out.rfind(", ", fuzzy.out.rfind(" of ", at)) + 2;
+    most = std::max<std::size_t>(most, std::stoul(fuzzy.out.substr(line)));
+    ++groups;
+  }
+  EXPECT_GT(groups, 1u) << fuzzy.out;
+  EXPECT_GT(most, 100u) << fuzzy.out;
+
+  // With a JSON output the polygons would change: no culling, and stats.cull says so.
+  const Outcome json_run = hlr(args({"-o", out("d.json").string(), "-o", out("d.csv").string()}));
+  ASSERT_EQ(json_run.exit_code, 0) << json_run.err;
+  EXPECT_EQ(slurp(out("d.csv")), slurp(out("none.csv")));
+  const json doc = json::parse(slurp(out("d.json")));
+  const json& cull = doc.at("stats").at("cull");
+  EXPECT_EQ(cull.at("mode"), "none");
+  ASSERT_GT(cull.at("groups").size(), 1u);
+  std::size_t lights = 0;
+  for (const auto& g : cull.at("groups")) {
+    EXPECT_EQ(g.at("culled"), 0);
+    EXPECT_EQ(g.at("patches"), 408);
+    lights += g.at("lights").at(1).get<std::size_t>() - g.at("lights").at(0).get<std::size_t>() + 1;
+  }
+  EXPECT_EQ(lights, doc.at("lights").size());
+}
+
 TEST_F(CliShadows, BadInputIsOneLineAndNoFile) {
   const std::string o = out("x.json").string();
   expect_failure({"shadows", box(), "--sun", "0,0,0", "-o", o}, 2, "hlr: --sun 0,0,0: ", "zero");

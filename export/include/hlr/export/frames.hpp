@@ -48,19 +48,16 @@ struct FramesOptions {
   // Consecutive eyes form a group while the box around them is no longer than this along any
   // axis; 0: a tenth of the scene's bounding-box diagonal (a larger box culls little).
   double group_extent = 0;
-  int raster = 0;  // pixels: draw each frame by the raster path instead (no culling there)
+  // Pixels: draw each frame by the raster path instead (no culling there), every frame an image of
+  // one view-plane window (RasterOptions::window: the union of the frames' raster_extent).
+  int raster = 0;
   // With culling: solve every frame a second time without it, for FrameGroup::unculled_seconds
   // (what the culling saved, measured rather than guessed; the run takes about twice as long).
   bool cull_report = false;
 };
 
-// The eyes of a group that one fuzzy pass culls for (cull_parts).
-struct CullPart {
-  std::vector<std::size_t> frames;  // ascending
-  std::size_t culled = 0;           // faces culled for these eyes
-  std::size_t useful = 0;           // of those, the ones a view would keep (not back faces)
-  std::vector<std::vector<bool>> faces;  // per mesh, per face: culled (empty when none is)
-};
+// The eyes of a group that one fuzzy pass culls for (cull_parts; `views`: its frames).
+using hidden_line::CullPart;
 
 struct FrameGroup {
   std::size_t first = 0, count = 0;  // frames first .. first + count - 1
@@ -84,13 +81,10 @@ struct FrameSet {
   std::vector<FrameGroup> groups;
 };
 
-// The groups of consecutive eyes (FramesOptions::group_extent).
+// The groups of consecutive eyes (FramesOptions::group_extent; hidden_line::group_views).
 std::vector<FrameGroup> group_eyes(const std::vector<View>& views, double extent);
 
-// The fuzzy culling of the eyes `frames` of `views`: one pass over their box; when it culls
-// nothing useful (no face but back faces, which every view removes anyway) and there are two
-// eyes or more, the eyes are split once, at the middle of the box's longest axis, and each half
-// is culled alone (at most three passes). Every pass's time and count go to `group`.
+// hidden_line::cull_parts of the eyes `frames` of `views`; every pass's time and count go to `group`.
 std::vector<CullPart> cull_parts(const Scene& scene, const std::vector<View>& views, std::vector<std::size_t> frames,
                                  const hidden_line::FuzzyOptions& options, StopToken stop, FrameGroup& group);
 

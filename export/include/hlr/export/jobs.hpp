@@ -62,6 +62,9 @@ struct RasterRun {
 };
 RasterRun draw_raster(const Scene& scene, const View& view, int resolution, const DrawOptions& options = {},
                       const SceneIntersections* intersections = nullptr);
+// The same with every raster option (RasterOptions::window: an image of a given view-plane window).
+RasterRun draw_raster(const Scene& scene, const View& view, const hidden_line::RasterOptions& raster,
+                      const DrawOptions& options = {}, const SceneIntersections* intersections = nullptr);
 
 struct SurfacesOptions {
   KernelKind kernel = KernelKind::exact;

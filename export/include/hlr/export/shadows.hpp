@@ -39,6 +39,7 @@ struct ShadowsDocument {
   const std::vector<LightLabel>& labels;  // per light
   const hidden_line::ShadowResult& result;
   double read_seconds = 0;
+  bool cull = false;  // ShadowOptions::cull: stats.cull reports the groups' culling
 };
 
 std::string shadows_json(const ShadowsDocument& doc);

@@ -27,8 +27,10 @@
 
 #include <hlr/hidden_line/lines.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace hlr::hidden_line {
@@ -49,7 +51,18 @@ RasterGrid raster_grid(double x0, double y0, double x1, double y1, int resolutio
 
 struct RasterOptions {
   int resolution = 1024;  // pixels along the longer side of the image, 16..16384
+  // The view-plane window the image shows, x0, y0, x1, y1 in the orthonormal view frame (model
+  // units; a perspective view's image plane at focal length 1), laid out as raster_grid lays out
+  // a drawing's box: several images of one window share their pixel size and placement (the
+  // frames of an animation). Nothing: the scene's own box (raster_extent). What lies outside the
+  // window is clipped: no pixel, no line sample.
+  std::optional<std::array<double, 4>> window;
 };
+
+// The box the raster path fits an image of `view` to when no window is given: the scene's
+// vertices (and a perspective view's crossings with its near plane) not behind the near plane,
+// x0, y0, x1, y1 in the orthonormal view frame; all zero when there are none.
+std::array<double, 4> raster_extent(const std::vector<Mesh>& meshes, const View& view);
 
 enum class DashPattern { paper, arc_length };
 

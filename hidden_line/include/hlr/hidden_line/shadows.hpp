@@ -39,6 +39,7 @@
 // rounded for output (the *_area doubles, LightView).
 #pragma once
 
+#include <hlr/hidden_line/fuzzy_cull.hpp>
 #include <hlr/hidden_line/jobs.hpp>
 #include <hlr/hidden_line/visibility.hpp>
 
@@ -160,6 +161,27 @@ struct ShadowOptions {
   // A stage line per light ("light 2 of 7: sorting 1200 polygons"); cancellation is checked
   // between the stages of every light (throws hlr::Cancelled).
   Progress progress;
+  // Sun studies (after Lim): consecutive directional lights whose unit directions fit in a box no
+  // longer than `cull_extent` along any axis form a group (group_views); with `cull`, the faces
+  // that no direction of a group's box can light (fuzzy_cull of its orthographic light views,
+  // split once by cull_parts where it culls nothing) are left out of the sources of its light
+  // views. A culled face is hidden strictly behind faces the views keep, so every face's lit area
+  // (face_lit_area, face_lit_area2, the union) is the same, exactly; the polygons are not: the
+  // area sort's fragments (ShadowSource::lights, LightView) depend on every polygon it sorts
+  // (strip borders, the order of its fronts), and a culled face has none (docs/FORMATS.md).
+  bool cull = false;
+  FuzzyOptions fuzzy;
+  double cull_extent = 0.25;  // about 14 degrees between the group's directions
+};
+
+// A group of consecutive directional lights (ShadowOptions::cull).
+struct ShadowCullGroup {
+  std::size_t first = 0, count = 0;  // lights first .. first + count - 1
+  std::size_t patches = 0;
+  std::size_t culled = 0;            // the most faces culled for one of its parts
+  std::size_t parts = 1, fuzzy_passes = 0;
+  double fuzzy_seconds = 0;          // all its fuzzy passes
+  double solve_seconds = 0;          // its lights' views, sorts and map back
 };
 
 struct ShadowResult {
@@ -168,13 +190,18 @@ struct ShadowResult {
   std::vector<std::vector<std::uint32_t>> face_source;
   std::vector<std::vector<double>> face_area;
   std::vector<std::vector<ShadowFT>> face_area2;  // exact, along the source's axis, twice
-  // Per light, per mesh, per face: the lit area (model units) and its exact projected double area.
+  // Per light, per mesh, per face: the lit area (model units, the exact area rounded once) and
+  // its exact projected double area.
   std::vector<std::vector<std::vector<double>>> face_lit_area;
   std::vector<std::vector<std::vector<ShadowFT>>> face_lit_area2;
   // With union_shadows: per mesh, per face, the area in shadow under at least one light.
   std::vector<std::vector<double>> face_union_shadow_area;
   std::vector<std::vector<ShadowFT>> face_union_shadow_area2;
   std::vector<LightView> views;  // per light, with ShadowOptions::light_views
+  // The groups of the directional lights (every one is in one; with ShadowOptions::cull their
+  // counts), and per light the faces culled from its light view (none: empty).
+  std::vector<ShadowCullGroup> cull_groups;
+  std::vector<std::size_t> culled_faces;
   ShadowTimes times;
 };
 

@@ -82,18 +82,24 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   solution->sources = hidden_line::build_sources<K>(scene.meshes, frame, sources);
   times.sources = seconds_since(mark);
   check();
-  progress.report("sorting " + std::to_string(solution->sources.polygons.size()) + " polygons");
-  mark = std::chrono::steady_clock::now();
-  // A drawing needs only the visible polygons: what the front pieces hide is not kept.
-  solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false, .stop = progress.stop});
-  times.sort = seconds_since(mark);
+  // The lines need no area sort (classify_lines against the sources); shadows cast into the
+  // view are cut to the visible polygons, so they do.
+  const bool sorted = !options.shadow_lights.empty();
+  if (sorted) {
+    progress.report("sorting " + std::to_string(solution->sources.polygons.size()) + " polygons");
+    mark = std::chrono::steady_clock::now();
+    solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false, .stop = progress.stop});
+    times.sort = seconds_since(mark);
+  }
   if (beside) beside->wait();
   times.intersections = intersections.seconds();
   check();
   progress.report("classifying feature lines");
   mark = std::chrono::steady_clock::now();
-  solution->lines = hidden_line::classify_lines<K>(scene.meshes, frame, solution->sources, solution->map,
-                                                   intersections.segments(), line_options(options));
+  solution->lines = sorted ? hidden_line::classify_lines<K>(scene.meshes, frame, solution->sources, solution->map,
+                                                            intersections.segments(), line_options(options))
+                           : hidden_line::classify_lines<K>(scene.meshes, frame, solution->sources,
+                                                            intersections.segments(), line_options(options));
   times.lines = seconds_since(mark);
   check();
   mark = std::chrono::steady_clock::now();

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace hlr::hidden_line::detail {
@@ -64,7 +65,8 @@ class LooseGrid {
     --filed_[l];
   }
 
-  // Calls visit(id) for every inserted id whose box overlaps `box` (each id once).
+  // Calls visit(id) for every inserted id whose box overlaps `box` (each id once), larger boxes
+  // first; a visit that returns true ends the query.
   template <class Visit>
   void query(const CGAL::Bbox_2& box, Visit&& visit) const {
     for (int l = 0; l < levels_; ++l) {
@@ -78,7 +80,13 @@ class LooseGrid {
       for (long y = y0; y <= y1; ++y)
         for (long x = x0; x <= x1; ++x)
           for (std::uint32_t id : cells_[l][index(l, x, y)])
-            if (CGAL::do_overlap(boxes_[id], box)) visit(id);
+            if (CGAL::do_overlap(boxes_[id], box)) {
+              if constexpr (std::is_same_v<decltype(visit(id)), bool>) {
+                if (visit(id)) return;
+              } else {
+                visit(id);
+              }
+            }
     }
   }
 

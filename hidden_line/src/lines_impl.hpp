@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 
@@ -154,6 +155,13 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   return out;
 }
 
+// A polygon that may hide lines: a visible fragment of the area sort, or a source itself.
+template <class K>
+struct Cover {
+  const clip::Polygon<K>* polygon;
+  std::uint32_t source;
+};
+
 template <class K>
 class Classifier {
   using G = Geometry<K>;
@@ -161,10 +169,10 @@ class Classifier {
   using P = typename G::Point;
 
  public:
-  Classifier(const std::vector<Mesh>& meshes, const Sources<K>& sources, const VisibilityMap<K>& map)
-      : sources_(sources), map_(map), view_points_(sources.view_points),
-        grid_(domain(map), map.visible.size()),
-        edge_on_grid_(domain(map), std::max<std::size_t>(sources.edge_on_edges.size(), 1)) {
+  Classifier(const std::vector<Mesh>& meshes, const Sources<K>& sources, std::vector<Cover<K>> covers)
+      : sources_(sources), covers_(std::move(covers)), view_points_(sources.view_points),
+        grid_(domain(covers_), covers_.size()),
+        edge_on_grid_(domain(covers_), std::max<std::size_t>(sources.edge_on_edges.size(), 1)) {
     source_of_face_.resize(meshes.size());
     for (std::size_t m = 0; m < meshes.size(); ++m) source_of_face_[m].assign(meshes[m].faces.size(), -1);
     for (std::size_t s = 0; s < sources.polygons.size(); ++s)
@@ -180,8 +188,10 @@ class Classifier {
           if (at.empty() || at.back() != std::int32_t(s)) at.push_back(std::int32_t(s));  // sources come in order
         }
     }
-    boxes_.reserve(map.visible.size());
-    for (std::uint32_t i = 0; i < map.visible.size(); ++i) grid_.insert(i, boxes_.emplace_back(box_of(map.visible[i].polygon)));
+    boxes_.reserve(covers_.size());
+    for (std::uint32_t i = 0; i < covers_.size(); ++i) grid_.insert(i, boxes_.emplace_back(box_of(*covers_[i].polygon)));
+    nearest_.reserve(covers_.size());
+    for (const Cover<K>& c : covers_) nearest_.push_back(nearest_depth(*c.polygon, sources.polygons[c.source].plane));
     for (std::uint32_t i = 0; i < sources.edge_on_edges.size(); ++i) {
       const auto [m, v0, v1] = sources.edge_on_edges[i];
       edge_on_grid_.insert(i, G::bbox(image(m, v0)) + G::bbox(image(m, v1)));
@@ -280,6 +290,7 @@ class Classifier {
   // What one thread needs to classify lines; the classifier itself is shared and read only.
   struct Scratch {
     std::vector<Occluder<K>> occluders;
+    std::vector<std::pair<FT, FT>> whole;
     SharedParams params;
     std::unordered_map<std::uint32_t, Depth<K>> by_source;  // the line against each source's plane
     std::deque<Depth<K>> edge_on;                           // against faces seen edge-on
@@ -325,17 +336,32 @@ class Classifier {
       return it->second;
     };
 
+    // Where covers nearer than the line all along it (whole_) cover all of it, the line is hidden
+    // all along: every span lies in one of them, whatever the other occluders do.
+    const double line_depth = std::min(G::interval(a.z).first, G::interval(b.z).first);
+    auto& whole = scratch.whole;
+    whole.clear();
+    bool hidden_all_along = false;
     grid_.query(line.bbox(), [&](std::uint32_t i) {
-      const Fragment<K>& frag = map_.visible[i];
-      if (std::binary_search(own.begin(), own.end(), std::int32_t(frag.source))) return;
-      const Depth<K>& depth = depth_of_source(frag.source);
+      // Wholly behind the nearest point of the line: on interval bounds, so it decides nothing
+      // the exact test below would not.
+      if (nearest_[i] < line_depth) return false;
+      const Cover<K>& cover = covers_[i];
+      if (std::binary_search(own.begin(), own.end(), std::int32_t(cover.source))) return false;
+      const Depth<K>& depth = depth_of_source(cover.source);
       // Never strictly nearer along the line (the depth difference is linear in t).
-      if (depth.sign0 <= 0 && depth.sign1 <= 0) return;
+      if (depth.sign0 <= 0 && depth.sign1 <= 0) return false;
       // A line across the box's corner: the boxes overlap, the fragment lies off the line.
-      if (line_misses_box<K>(line.a, line.b, boxes_[i])) return;
-      for (const auto& [lo, hi] : inside_intervals(line, frag.polygon, params, true, true))
+      if (line_misses_box<K>(line.a, line.b, boxes_[i])) return false;
+      const bool nearer_all_along = depth.sign0 > 0 && depth.sign1 > 0;
+      for (const auto& [lo, hi] : inside_intervals(line, *cover.polygon, params, true, true)) {
         occluders_.push_back({lo, hi, &depth});
+        if (nearer_all_along) whole.emplace_back(lo, hi);
+      }
+      if (nearer_all_along && !whole.empty()) hidden_all_along = covers_unit(whole);
+      return hidden_all_along;
     });
+    if (hidden_all_along) return {{FT(0), FT(1), false}};
 
     // Faces seen edge-on cover the line where their edges' images run along it.
     edge_on_grid_.query(line.bbox(), [&](std::uint32_t i) {
@@ -384,29 +410,51 @@ class Classifier {
   }
 
  private:
-  static CGAL::Bbox_2 domain(const VisibilityMap<K>& map) {
+  static CGAL::Bbox_2 domain(const std::vector<Cover<K>>& covers) {
     CGAL::Bbox_2 box;
-    for (const auto& frag : map.visible) box += box_of(frag.polygon);
+    for (const auto& c : covers) box += box_of(*c.polygon);
     return box;
   }
   const P& image(std::uint32_t mesh, std::uint32_t v) const { return sources_.image_points[mesh][v]; }
+  // An upper bound of the depth z = a x + b y + c over the polygon (at its outer corners: the
+  // polygon lies in their hull), in interval arithmetic on the numbers' bounds.
+  static double nearest_depth(const clip::Polygon<K>& polygon, const DepthPlane<K>& plane) {
+    using I = CGAL::Interval_nt<>;
+    auto bounds = [](const FT& v) {
+      const auto [lo, hi] = G::interval(v);
+      return I(lo, hi);
+    };
+    const I pa = bounds(plane.a), pb = bounds(plane.b), pc = bounds(plane.c);
+    double z = -std::numeric_limits<double>::infinity();
+    for (const P& p : polygon.outer.points) z = std::max(z, (pa * bounds(G::x(p)) + pb * bounds(G::y(p)) + pc).sup());
+    return z;
+  }
+  // Whether closed intervals in [0, 1] cover all of it.
+  static bool covers_unit(std::vector<std::pair<FT, FT>>& intervals) {
+    std::sort(intervals.begin(), intervals.end());
+    FT reach(0);
+    for (const auto& [lo, hi] : intervals) {
+      if (reach < lo) return false;
+      if (reach < hi) reach = hi;
+    }
+    return !(reach < FT(1));
+  }
 
   const Sources<K>& sources_;
-  const VisibilityMap<K>& map_;
+  std::vector<Cover<K>> covers_;
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
   std::vector<std::vector<std::vector<std::int32_t>>> sources_at_vertex_;  // per mesh, per vertex, sorted
-  std::vector<CGAL::Bbox_2> boxes_;  // of map_.visible's polygons
+  std::vector<CGAL::Bbox_2> boxes_;  // of covers_' polygons
+  std::vector<double> nearest_;      // nearest_depth of covers_' polygons
   LooseGrid grid_, edge_on_grid_;
 };
 
-}  // namespace detail
-
 template <class K>
-LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
-                          const VisibilityMap<K>& map, const std::vector<IntersectionSegment>& intersections,
+LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
+                          std::vector<Cover<K>> covers, const std::vector<IntersectionSegment>& intersections,
                           const LineOptions& options) {
-  detail::Classifier<K> classifier(meshes, sources, map);
+  Classifier<K> classifier(meshes, sources, std::move(covers));
   // The lines first, each with the sources it lies in (`own`, sorted); then their pieces, in
   // parallel over chunks of lines: each line is classified on its own, so the result does not
   // depend on the number of threads.
@@ -422,7 +470,7 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
     owns.push_back(std::move(own));
   };
 
-  tbb::enumerable_thread_specific<typename detail::Classifier<K>::Scratch> scratch;
+  tbb::enumerable_thread_specific<typename Classifier<K>::Scratch> scratch;
   std::size_t polls = 0;
   try {
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
@@ -492,6 +540,27 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
   out.view_direction = frame.view().direction;
   out.view_eye = frame.view().eye;
   return out;
+}
+
+}  // namespace detail
+
+template <class K>
+LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
+                          const VisibilityMap<K>& map, const std::vector<IntersectionSegment>& intersections,
+                          const LineOptions& options) {
+  std::vector<detail::Cover<K>> covers;
+  covers.reserve(map.visible.size());
+  for (const auto& f : map.visible) covers.push_back({&f.polygon, f.source});
+  return detail::classify_against(meshes, frame, sources, std::move(covers), intersections, options);
+}
+
+template <class K>
+LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
+                          const std::vector<IntersectionSegment>& intersections, const LineOptions& options) {
+  std::vector<detail::Cover<K>> covers;
+  covers.reserve(sources.polygons.size());
+  for (std::uint32_t s = 0; s < sources.polygons.size(); ++s) covers.push_back({&sources.polygons[s].polygon, s});
+  return detail::classify_against(meshes, frame, sources, std::move(covers), intersections, options);
 }
 
 template <class K>

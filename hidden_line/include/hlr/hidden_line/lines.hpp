@@ -103,6 +103,15 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
                           const VisibilityMap<K>& map, const std::vector<IntersectionSegment>& intersections,
                           const LineOptions& options = {});
 
+// The same pieces without the area sort: the sources themselves are the occluders. A point is
+// hidden when some face is strictly nearer there, and wherever one is, the visible fragment there
+// is nearer still (and conversely each fragment lies in its source), so both give the same lines;
+// what the sources add are split points inside runs of one class, which are joined. It costs more
+// per line where the scene is deep (a line behind k faces meets all k), far less than the sort.
+template <class K>
+LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
+                          const std::vector<IntersectionSegment>& intersections, const LineOptions& options = {});
+
 // A segment of the drawing in the image plane (unnormalized view frame). `mesh` is the part it
 // is drawn for: its line's mesh (for an intersection line the lower of the two meshes); where
 // lines of several meshes coincide, the one that comes first in the LineSet is drawn.
@@ -124,6 +133,8 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   EXTERN template LineSet<K> classify_lines<K>(const std::vector<Mesh>&, const ViewFrame<K>&, const Sources<K>&, \
                                               const VisibilityMap<K>&, const std::vector<IntersectionSegment>&, \
                                               const LineOptions&);                                           \
+  EXTERN template LineSet<K> classify_lines<K>(const std::vector<Mesh>&, const ViewFrame<K>&, const Sources<K>&, \
+                                              const std::vector<IntersectionSegment>&, const LineOptions&);     \
   EXTERN template std::vector<DrawnSegment<K>> drawing_segments<K>(const LineSet<K>&, StopToken);
 
 HLR_HIDDEN_LINE_LINES_DECLARE(ExactKernel, extern)

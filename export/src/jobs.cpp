@@ -76,15 +76,18 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   auto mark = std::chrono::steady_clock::now();
   progress.report(std::to_string(scene.input.faces) + " faces; building polygons (" +
                   kernel_name(kernel_kind_of<K>()) + ")");
-  hidden_line::SourceOptions sources;
-  sources.stop = progress.stop;
-  if constexpr (std::is_same_v<K, ExactKernel>) sources.culled = options.culled_faces;
-  solution->sources = hidden_line::build_sources<K>(scene.meshes, frame, sources);
-  times.sources = seconds_since(mark);
-  check();
   // The lines need no area sort (classify_lines against the sources); shadows cast into the
   // view are cut to the visible polygons, so they do.
   const bool sorted = !options.shadow_lights.empty();
+  hidden_line::SourceOptions sources;
+  sources.stop = progress.stop;
+  if constexpr (std::is_same_v<K, ExactKernel>) {
+    sources.culled = options.culled_faces;
+    sources.depth_planes = sorted || frame.perspective();  // else decided in model space
+  }
+  solution->sources = hidden_line::build_sources<K>(scene.meshes, frame, sources);
+  times.sources = seconds_since(mark);
+  check();
   if (sorted) {
     progress.report("sorting " + std::to_string(solution->sources.polygons.size()) + " polygons");
     mark = std::chrono::steady_clock::now();

@@ -90,10 +90,10 @@ std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     js["faces"] = faces;
-    const auto plane = detail::orthonormal_plane(s.plane, doc.frame);
+    const auto plane = detail::orthonormal_plane(*s.plane, doc.frame);
     js["plane"] = {plane[0], plane[1], plane[2], plane[3]};
     if (exact)
-      js["plane_exact"] = {G::exact_string(s.plane.a), G::exact_string(s.plane.b), "-1", G::exact_string(s.plane.c)};
+      js["plane_exact"] = {G::exact_string(s.plane->a), G::exact_string(s.plane->b), "-1", G::exact_string(s.plane->c)};
     sources.push_back(std::move(js));
   }
   out["sources"] = std::move(sources);
@@ -180,7 +180,7 @@ std::string surfaces_svg(const SurfacesDocument<K>& doc) {
   for (const auto& f : doc.map.visible) {
     // Lambert shade, light from the upper left behind the viewer, so that faces of different
     // orientation differ even where they make the same angle with the view direction.
-    const auto n = detail::orthonormal_plane(doc.sources.polygons[f.source].plane, doc.frame);
+    const auto n = detail::orthonormal_plane(*doc.sources.polygons[f.source].plane, doc.frame);
     const double shade = std::clamp(0.35 + 0.65 * (-0.42 * n[0] + 0.56 * n[1] + 0.71 * n[2]), 0.0, 1.0);
     const int red = int(70 + 160 * shade), green = int(95 + 150 * shade), blue = int(125 + 125 * shade);
     out << "<path d=\"" << path(f.polygon) << "\" fill=\"rgb(" << red << ',' << green << ',' << blue << ")\"/>\n";

@@ -34,7 +34,7 @@ std::vector<double> rough_depths(const std::vector<SourcePolygon<K>>& polygons) 
   std::vector<double> nearest(polygons.size());
   for (std::size_t s = 0; s < polygons.size(); ++s) {
     const auto& sp = polygons[s];
-    const double a = G::rough_double(sp.plane.a), b = G::rough_double(sp.plane.b), c = G::rough_double(sp.plane.c);
+    const double a = G::rough_double(sp.plane->a), b = G::rough_double(sp.plane->b), c = G::rough_double(sp.plane->c);
     double z = -HUGE_VAL;
     for (const auto& p : sp.polygon.outer.points)
       z = std::max(z, a * G::rough_double(G::x(p)) + b * G::rough_double(G::y(p)) + c);
@@ -171,8 +171,8 @@ class AreaSort {
 
   // Where piece (of source s) lies relative to the plane of source f, over all of the piece.
   Relation relation(const Polygon& piece, std::uint32_t s, std::uint32_t f) const {
-    const auto& ps = polygons_[s].plane;
-    const auto& pf = polygons_[f].plane;
+    const auto& ps = *polygons_[s].plane;
+    const auto& pf = *polygons_[f].plane;
     const FT da = ps.a - pf.a, db = ps.b - pf.b, dc = ps.c - pf.c;
     bool nearer_somewhere = false, farther_somewhere = false;
     // The depth difference is linear: its extremes are at corners of the outer contour.
@@ -194,8 +194,8 @@ class AreaSort {
   // that can reach the piece lies on that line.
   std::pair<std::vector<Polygon>, std::vector<Polygon>> split(const Polygon& piece, std::uint32_t s, std::uint32_t f) {
     ++map_.stats.penetration_splits;
-    const auto& ps = polygons_[s].plane;
-    const auto& pf = polygons_[f].plane;
+    const auto& ps = *polygons_[s].plane;
+    const auto& pf = *polygons_[f].plane;
     const FT da = ps.a - pf.a, db = ps.b - pf.b, dc = ps.c - pf.c;  // nearer where da x + db y + dc > 0
     const CGAL::Bbox_2 box = box_of(piece);
     auto widen = [](double v, double dir) { return v + dir * (1 + 1e-6 * std::abs(v)); };

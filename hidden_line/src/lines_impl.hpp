@@ -3,12 +3,12 @@
 //
 // A line is parametrized as a + t (b - a), t in [0, 1], and everything about it is decided on t:
 //   - an occluder is a closed t-interval where something covers the line's image, with the depth
-//     difference f(t) = z_occluder(t) - z_line(t), which is linear in t: a visible fragment's
-//     plane over the intervals where the line runs in the fragment's closure, or an edge of a face
-//     seen edge-on whose image runs along the line;
+//     difference f(t) = z_occluder(t) - z_line(t), which is linear in t: a cover's plane (a
+//     source's, or a visible fragment's) over the intervals where the line runs in the cover's
+//     closure, or an edge of a face seen edge-on whose image runs along the line;
 //   - the line is hidden at t when some occluder active at t has f(t) > 0.
 // So the split points are the ends of occluder intervals (crossings with the support lines of
-// fragment edges, and fragment corners on the line) and the zeros of f (where the line passes
+// cover edges, and cover corners on the line) and the zeros of f (where the line passes
 // through an occluder's plane), and the class of each span between split points is read at its
 // middle. Only the comparisons of exact numbers decide; nothing is rounded.
 #pragma once
@@ -169,8 +169,9 @@ class Classifier {
   using P = typename G::Point;
 
  public:
-  Classifier(const std::vector<Mesh>& meshes, const Sources<K>& sources, std::vector<Cover<K>> covers)
-      : sources_(sources), covers_(std::move(covers)), view_points_(sources.view_points),
+  Classifier(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
+             std::vector<Cover<K>> covers)
+      : meshes_(meshes), sources_(sources), covers_(std::move(covers)), view_points_(sources.view_points),
         grid_(domain(covers_), covers_.size()),
         edge_on_grid_(domain(covers_), std::max<std::size_t>(sources.edge_on_edges.size(), 1)) {
     source_of_face_.resize(meshes.size());
@@ -190,8 +191,21 @@ class Classifier {
     }
     boxes_.reserve(covers_.size());
     for (std::uint32_t i = 0; i < covers_.size(); ++i) grid_.insert(i, boxes_.emplace_back(box_of(*covers_[i].polygon)));
+    // Orthographic views on the exact kernel decide depths in model space, on the input doubles.
+    if constexpr (G::exact_constructions)
+      if (!frame.perspective()) {
+        model_planes_.reserve(sources.polygons.size());
+        for (const auto& sp : sources.polygons) {
+          const auto& v = meshes[sp.mesh].vertices;
+          model_planes_.emplace_back(v[sp.plane_points[0]], v[sp.plane_points[1]], v[sp.plane_points[2]],
+                                     frame.view().direction);
+        }
+      }
     nearest_.reserve(covers_.size());
-    for (const Cover<K>& c : covers_) nearest_.push_back(nearest_depth(*c.polygon, sources.polygons[c.source].plane));
+    for (const Cover<K>& c : covers_) {
+      const SourcePolygon<K>& source = sources.polygons[c.source];
+      nearest_.push_back(source.plane ? nearest_depth(*c.polygon, *source.plane) : nearest_vertex(source));
+    }
     for (std::uint32_t i = 0; i < sources.edge_on_edges.size(); ++i) {
       const auto [m, v0, v1] = sources.edge_on_edges[i];
       edge_on_grid_.insert(i, G::bbox(image(m, v0)) + G::bbox(image(m, v1)));
@@ -213,22 +227,34 @@ class Classifier {
 
   // The line to classify: its ends in view coordinates and projected, and what is known of it
   // without arithmetic: the support line it is (a mesh edge's), and its ends' mesh vertices.
+  // Its ends in model space where depths are decided there: input vertices, or exact points.
   struct Query {
     const ViewPoint<K>&a, &b;
     P pa, pb;
     clip::LineId line = kNoLine;
     std::uint32_t mesh = 0, v0 = kNoVertex, v1 = kNoVertex;
+    const Vec3 *model_a = nullptr, *model_b = nullptr;
+    const ModelPlane::Point3 *exact_a = nullptr, *exact_b = nullptr;
   };
   // A mesh edge's ends in front of the near plane (NearCut::edge_ends): an end replaced by the
   // edge's crossing with it is no mesh vertex.
   Query mesh_edge(std::uint32_t mesh, std::uint32_t v0, std::uint32_t v1) const {
     const auto& images = sources_.image_points[mesh];
     const auto [i0, i1] = *sources_.near_cuts[mesh].edge_ends(v0, v1);
-    return {view_points_[mesh][i0], view_points_[mesh][i1], images[i0], images[i1], line_of_edge(mesh, v0, v1), mesh,
+    Query q{view_points_[mesh][i0], view_points_[mesh][i1], images[i0], images[i1], line_of_edge(mesh, v0, v1), mesh,
             i0 == v0 ? v0 : kNoVertex, i1 == v1 ? v1 : kNoVertex};
+    if (!model_planes_.empty()) {  // orthographic: the ends are input vertices
+      q.model_a = &meshes_[mesh].vertices[i0];
+      q.model_b = &meshes_[mesh].vertices[i1];
+    }
+    return q;
   }
-  static Query constructed(const ViewPoint<K>& a, const ViewPoint<K>& b) {
-    return {a, b, G::point(a.x, a.y), G::point(b.x, b.y)};
+  // A line between constructed points: `model` are its ends in model space (orthographic views).
+  static Query constructed(const ViewPoint<K>& a, const ViewPoint<K>& b,
+                           std::pair<const ModelPlane::Point3*, const ModelPlane::Point3*> model = {}) {
+    Query q{a, b, G::point(a.x, a.y), G::point(b.x, b.y)};
+    std::tie(q.exact_a, q.exact_b) = model;
+    return q;
   }
 
   // Parameters along the line being classified, one per support line it crosses: the fragments
@@ -322,21 +348,35 @@ class Classifier {
     // The line against the plane of a source, once per source.
     auto depth_of_source = [&](std::uint32_t source) -> const Depth<K>& {
       auto [it, added] = scratch.by_source.try_emplace(source);
-      if (added) {
-        const DepthPlane<K>& plane = sources_.polygons[source].plane;
-        auto f = [&](const ViewPoint<K>& p) { return plane.a * p.x + plane.b * p.y + plane.c - p.z; };
-        Depth<K>& d = it->second;
-        d.sign0 = in_plane(q.v0, std::int32_t(source)) ? 0 : G::sign_above(plane.a, plane.b, plane.c, a.x, a.y, a.z);
-        d.sign1 = in_plane(q.v1, std::int32_t(source)) ? 0 : G::sign_above(plane.a, plane.b, plane.c, b.x, b.y, b.z);
-        if (d.crosses()) {
-          const FT f0 = f(a), f1 = f(b);
-          d.t0 = f0 / (f0 - f1);
+      if (!added) return it->second;
+      if constexpr (G::exact_constructions)
+        if (!model_planes_.empty()) {
+          const ModelPlane& plane = model_planes_[source];
+          Depth<K>& d = it->second;
+          if (q.model_a) {
+            d.sign0 = in_plane(q.v0, std::int32_t(source)) ? 0 : plane.nearer_than(*q.model_a);
+            d.sign1 = in_plane(q.v1, std::int32_t(source)) ? 0 : plane.nearer_than(*q.model_b);
+            if (d.crosses()) d.t0 = plane.crossing(*q.model_a, *q.model_b);
+          } else {
+            d.sign0 = plane.nearer_than(*q.exact_a);
+            d.sign1 = plane.nearer_than(*q.exact_b);
+            if (d.crosses()) d.t0 = plane.crossing(*q.exact_a, *q.exact_b);
+          }
+          return d;
         }
+      const DepthPlane<K>& plane = *sources_.polygons[source].plane;
+      auto f = [&](const ViewPoint<K>& p) { return plane.a * p.x + plane.b * p.y + plane.c - p.z; };
+      Depth<K>& d = it->second;
+      d.sign0 = in_plane(q.v0, std::int32_t(source)) ? 0 : G::sign_above(plane.a, plane.b, plane.c, a.x, a.y, a.z);
+      d.sign1 = in_plane(q.v1, std::int32_t(source)) ? 0 : G::sign_above(plane.a, plane.b, plane.c, b.x, b.y, b.z);
+      if (d.crosses()) {
+        const FT f0 = f(a), f1 = f(b);
+        d.t0 = f0 / (f0 - f1);
       }
-      return it->second;
+      return d;
     };
 
-    // Where covers nearer than the line all along it (whole_) cover all of it, the line is hidden
+    // Where covers nearer than the line all along it (`whole`) cover all of it, the line is hidden
     // all along: every span lies in one of them, whatever the other occluders do.
     const double line_depth = std::min(G::interval(a.z).first, G::interval(b.z).first);
     auto& whole = scratch.whole;
@@ -351,14 +391,18 @@ class Classifier {
       const Depth<K>& depth = depth_of_source(cover.source);
       // Never strictly nearer along the line (the depth difference is linear in t).
       if (depth.sign0 <= 0 && depth.sign1 <= 0) return false;
-      // A line across the box's corner: the boxes overlap, the fragment lies off the line.
+      // A line across the box's corner: the boxes overlap, the cover lies off the line.
       if (line_misses_box<K>(line.a, line.b, boxes_[i])) return false;
       const bool nearer_all_along = depth.sign0 > 0 && depth.sign1 > 0;
+      bool added = false;
       for (const auto& [lo, hi] : inside_intervals(line, *cover.polygon, params, true, true)) {
         occluders_.push_back({lo, hi, &depth});
-        if (nearer_all_along) whole.emplace_back(lo, hi);
+        if (nearer_all_along) {
+          whole.emplace_back(lo, hi);
+          added = true;
+        }
       }
-      if (nearer_all_along && !whole.empty()) hidden_all_along = covers_unit(whole);
+      if (added) hidden_all_along = covers_unit(whole);
       return hidden_all_along;
     });
     if (hidden_all_along) return {{FT(0), FT(1), false}};
@@ -416,6 +460,13 @@ class Classifier {
     return box;
   }
   const P& image(std::uint32_t mesh, std::uint32_t v) const { return sources_.image_points[mesh][v]; }
+  // An upper bound of the depth over a source: at its faces' corners (z is linear over each face).
+  double nearest_vertex(const SourcePolygon<K>& source) const {
+    double z = -std::numeric_limits<double>::infinity();
+    for (std::uint32_t f : source.faces)
+      for (std::uint32_t v : meshes_[source.mesh].faces[f]) z = std::max(z, G::interval(view_points_[source.mesh][v].z).second);
+    return z;
+  }
   // An upper bound of the depth z = a x + b y + c over the polygon (at its outer corners: the
   // polygon lies in their hull), in interval arithmetic on the numbers' bounds.
   static double nearest_depth(const clip::Polygon<K>& polygon, const DepthPlane<K>& plane) {
@@ -440,8 +491,10 @@ class Classifier {
     return !(reach < FT(1));
   }
 
+  const std::vector<Mesh>& meshes_;
   const Sources<K>& sources_;
   std::vector<Cover<K>> covers_;
+  std::vector<ModelPlane> model_planes_;  // per source, in orthographic views on the exact kernel
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
   std::vector<std::vector<std::vector<std::int32_t>>> sources_at_vertex_;  // per mesh, per vertex, sorted
@@ -454,12 +507,13 @@ template <class K>
 LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
                           std::vector<Cover<K>> covers, const std::vector<IntersectionSegment>& intersections,
                           const LineOptions& options) {
-  Classifier<K> classifier(meshes, sources, std::move(covers));
+  Classifier<K> classifier(meshes, frame, sources, std::move(covers));
   // The lines first, each with the sources it lies in (`own`, sorted); then their pieces, in
   // parallel over chunks of lines: each line is classified on its own, so the result does not
   // depend on the number of threads.
   LineSet<K> out;
   std::vector<std::vector<std::int32_t>> owns;
+  std::vector<const IntersectionSegment*> segments;  // per line: its intersection segment, or null
   auto add = [&](FeatureLine<K> line, std::initializer_list<std::pair<std::uint32_t, const std::vector<std::uint32_t>*>> sides) {
     std::vector<std::int32_t> own;
     for (const auto& [mesh, faces] : sides)
@@ -468,6 +522,7 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
     std::sort(own.begin(), own.end());
     out.lines.push_back(std::move(line));
     owns.push_back(std::move(own));
+    segments.push_back(nullptr);
   };
 
   tbb::enumerable_thread_specific<typename Classifier<K>::Scratch> scratch;
@@ -509,6 +564,7 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
           out.end_recipes.push_back({s.recipe_a, s.recipe_b});
         }
         add(std::move(line), {{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
+        segments.back() = &s;
       }
     }
 
@@ -517,8 +573,10 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
       auto& mine = scratch.local();
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         FeatureLine<K>& line = out.lines[i];
-        const auto query = line.kind == FeatureKind::intersection ? classifier.constructed(line.a, line.b)
-                                                                  : classifier.mesh_edge(line.mesh, line.v0, line.v1);
+        const IntersectionSegment* s = frame.perspective() ? nullptr : segments[i];  // ends uncut
+        const auto query = line.kind == FeatureKind::intersection
+                               ? classifier.constructed(line.a, line.b, {s ? &s->a : nullptr, s ? &s->b : nullptr})
+                               : classifier.mesh_edge(line.mesh, line.v0, line.v1);
         line.pieces = classifier.classify(query, owns[i], mine);
       }
     });

@@ -436,7 +436,7 @@ class LightSolver {
     for (const auto& v : map.visible)
       if (toward(v.source)) add_lit(v.polygon, v.source);
     auto coplanar = [&](std::uint32_t a, std::uint32_t b) {
-      const auto &p = sources_.polygons[a].plane, &q = sources_.polygons[b].plane;
+      const auto &p = *sources_.polygons[a].plane, &q = *sources_.polygons[b].plane;
       return p.a == q.a && p.b == q.b && p.c == q.c;
     };
     for (const auto& h : map.hidden) {
@@ -524,7 +524,7 @@ class LightSolver {
   // Light-view counter-clockwise is counter-clockwise seen from the light, which is the front of a
   // source facing it: no reversal.
   ShadowPolygon lift(const clip::Polygon<K>& polygon, std::uint32_t area_source) const {
-    const auto& plane = sources_.polygons[area_source].plane;
+    const auto& plane = *sources_.polygons[area_source].plane;
     ShadowPolygon out;
     for (const P2& q : polygon.outer.points) out.outer.push_back(lift(q, plane));
     for (const auto& h : polygon.holes) {

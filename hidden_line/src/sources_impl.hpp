@@ -235,7 +235,8 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     auto add_source = [&](clip::Polygon<K> polygon, std::vector<std::uint32_t> faces) {
       SourcePolygon<K> s;
       s.polygon = std::move(polygon);
-      s.plane = plane_of(faces.front());
+      s.plane_points = plane_corners(faces.front());
+      if (options.depth_planes) s.plane = plane_of(faces.front());
       s.mesh = mi;
       s.faces = std::move(faces);
       out.polygons.push_back(std::move(s));

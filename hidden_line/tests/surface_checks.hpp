@@ -97,7 +97,7 @@ XMap to_xmap(const hidden_line::Sources<K>& sources, const hidden_line::Visibili
   XMap x;
   for (const auto& s : sources.polygons)
     x.sources.push_back({s.mesh, s.faces, to_exact_polygon<K>(s.polygon),
-                         {to_exact_number<K>(s.plane.a), to_exact_number<K>(s.plane.b), to_exact_number<K>(s.plane.c)}});
+                         {to_exact_number<K>(s.plane->a), to_exact_number<K>(s.plane->b), to_exact_number<K>(s.plane->c)}});
   for (const auto& f : map.visible) x.visible.push_back({to_exact_polygon<K>(f.polygon), f.source, f.occluder});
   for (const auto& f : map.hidden) x.hidden.push_back({to_exact_polygon<K>(f.polygon), f.source, f.occluder});
   x.source_stats = sources.stats;

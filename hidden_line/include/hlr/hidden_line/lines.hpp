@@ -5,10 +5,11 @@
 // the faces of one coplanar group are joined). They do not depend on the view.
 //
 // classify_lines splits every feature edge (kernel/features.hpp) and every intersection segment
-// into visible and hidden pieces against the VisibilityMap. A point of a line is hidden when a face
-// is strictly nearer at its image position (DESIGN.md "What is visible"; faces are closed sets,
-// and faces seen edge-on count too). Split points are the line's crossings with the support lines
-// of visible fragments' edges, and the points where the line passes through an occluder's plane:
+// into visible and hidden pieces, against the VisibilityMap or against the sources themselves (the
+// same pieces, without the sort). A point of a line is hidden when a face is strictly nearer at its
+// image position (DESIGN.md "What is visible"; faces are closed sets, and faces seen edge-on count
+// too). Split points are the line's crossings with the support lines of the occluding polygons'
+// edges, and the points where the line passes through an occluder's plane:
 // each is constructed from input data only (DESIGN.md rule 3). The pieces of a line cover it
 // exactly once, and consecutive pieces differ in visibility.
 //

@@ -26,6 +26,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace hlr::hidden_line {
@@ -48,7 +49,10 @@ struct LineOrigin {
 template <class K>
 struct SourcePolygon {
   clip::Polygon<K> polygon;  // projected, outer counter-clockwise
-  DepthPlane<K> plane;
+  std::optional<DepthPlane<K>> plane;  // none without SourceOptions::depth_planes
+  // Three corners that span the plane, as indices into the mesh's view_points (in an
+  // orthographic view, input vertices).
+  std::array<std::uint32_t, 3> plane_points{};
   std::uint32_t mesh = 0;
   std::vector<std::uint32_t> faces;  // indices into the mesh's face list
 };
@@ -94,6 +98,10 @@ struct SourceOptions {
   // are left out of the sources as if they were not in the mesh (a coplanar group merges the
   // rest); what is seen, and every line's visibility, is the same.
   const std::vector<std::vector<bool>>* culled = nullptr;
+  // Each source's DepthPlane: the area sort and the shadows need it; a line drawing in an
+  // orthographic view on the exact kernel decides depths in model space instead (ModelPlane in
+  // kernel/view_predicates.hpp) and is spared building them.
+  bool depth_planes = true;
   StopToken stop;  // polled as the faces are projected
 };
 

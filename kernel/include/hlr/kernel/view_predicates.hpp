@@ -5,10 +5,19 @@
 // decide the rest, far cheaper than the exact evaluation of the points' view coordinates.
 // In a perspective view the images of p, q, r are collinear exactly when p, q, r and the eye are
 // coplanar: det[q - p, r - p, e - p] = 0 (collinear_seen_from).
+//
+// Depth in an orthographic view, from model space (ModelPlane): the view map is linear with a
+// positive determinant (|d|² |X|², view.hpp), so it keeps the sign of every orientation of four
+// points, and the images of p, q, r turn counter-clockwise exactly when det[q - p, r - p, d] < 0
+// (Binet–Cauchy: (X·u)(Y·w) - (Y·u)(X·w) = (X × Y)·(u × w), X × Y = -|X|² d). So whether a point
+// lies nearer to the viewer than a plane through three input points, and where a line crosses
+// that plane, are decided on the input doubles, without the plane's view-space equation.
 #pragma once
 
+#include <hlr/kernel/filtered_sign.hpp>
 #include <hlr/kernel/view.hpp>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
 
@@ -46,5 +55,71 @@ inline bool collinear_seen_from(const Vec3& p, const Vec3& q, const Vec3& r, con
   }
   return view_detail::det_with_direction<CGAL::Exact_rational>(p, q, r, eye, true) == CGAL::ZERO;
 }
+
+// The plane through three input points (not collinear) in an orthographic view along d.
+class ModelPlane {
+ public:
+  using Point3 = ExactKernel::Point_3;
+  using FT = ExactKernel::FT;
+
+  ModelPlane(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& direction)
+      : a_(a), b_(b), c_(c), turn_(-sign_of_det(a, b, c, direction)) {}
+
+  // +1 where the plane lies strictly nearer to the viewer than p at p's image, -1 where farther,
+  // 0 where p lies in it: the sign of z_plane(p) - z(p) = -volume(p) / n_z, with n_z the sign of
+  // the images' turn.
+  int nearer_than(const Vec3& p) const { return -turn_ * volume_sign(p); }
+  int nearer_than(const Point3& p) const { return -turn_ * volume_sign(p); }
+
+  // The parameter t where the segment p0 + t (p1 - p0) meets the plane, for ends strictly on
+  // either side: volume(p0) / (volume(p0) - volume(p1)), the same in view space (a linear map
+  // keeps ratios along a line).
+  template <class P>
+  FT crossing(const P& p0, const P& p1) const {
+    const FT v0 = volume(p0), v1 = volume(p1);
+    return v0 / (v0 - v1);
+  }
+
+ private:
+  using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
+  static int sign_of_det(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& d) {
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const auto s = view_detail::det_with_direction<CGAL::Interval_nt<false>>(p, q, r, d);
+      if (CGAL::is_certain(s)) return CGAL::get_certain(s);
+    }
+    return view_detail::det_with_direction<CGAL::Exact_rational>(p, q, r, d);
+  }
+  static IK::Point_3 ip(const Vec3& v) { return {v[0], v[1], v[2]}; }
+  // sign((b - a) × (c - a) · (p - a)): Epick's orientation, exact on doubles.
+  int volume_sign(const Vec3& p) const { return CGAL::orientation(ip(a_), ip(b_), ip(c_), ip(p)); }
+  int volume_sign(const Point3& p) const {
+    return filtered_sign([&]<class NT>(std::type_identity<NT>) {
+      auto coordinate = [&](const FT& v) {
+        if constexpr (std::is_same_v<NT, CGAL::Exact_rational>) return NT(v.exact());
+        else return NT(CGAL::to_interval(v));
+      };
+      const NT px = coordinate(p.x()) - NT(a_[0]), py = coordinate(p.y()) - NT(a_[1]), pz = coordinate(p.z()) - NT(a_[2]);
+      const NT ux = NT(b_[0]) - NT(a_[0]), uy = NT(b_[1]) - NT(a_[1]), uz = NT(b_[2]) - NT(a_[2]);
+      const NT wx = NT(c_[0]) - NT(a_[0]), wy = NT(c_[1]) - NT(a_[1]), wz = NT(c_[2]) - NT(a_[2]);
+      return CGAL::sign(px * (uy * wz - uz * wy) + py * (uz * wx - ux * wz) + pz * (ux * wy - uy * wx));
+    });
+  }
+  template <class P>
+  FT volume(const P& p) const {
+    auto coordinate = [&](int k) -> FT {
+      if constexpr (std::is_same_v<P, Vec3>) return FT(p[k]);
+      else return p.cartesian(k);
+    };
+    const FT ax(a_[0]), ay(a_[1]), az(a_[2]);
+    const FT px = coordinate(0) - ax, py = coordinate(1) - ay, pz = coordinate(2) - az;
+    const FT ux = FT(b_[0]) - ax, uy = FT(b_[1]) - ay, uz = FT(b_[2]) - az;
+    const FT wx = FT(c_[0]) - ax, wy = FT(c_[1]) - ay, wz = FT(c_[2]) - az;
+    return px * (uy * wz - uz * wy) + py * (uz * wx - ux * wz) + pz * (ux * wy - uy * wx);
+  }
+
+  Vec3 a_, b_, c_;
+  int turn_;  // orientation of the images of a, b, c: the sign of the plane's view normal's z
+};
 
 }  // namespace hlr

@@ -3,6 +3,7 @@
 #include <hlr/kernel/kernel.hpp>
 #include <hlr/kernel/exact_output.hpp>
 #include <hlr/kernel/line_box.hpp>
+#include <hlr/kernel/view_predicates.hpp>
 
 #include <gtest/gtest.h>
 
@@ -191,6 +192,64 @@ TEST(ExactKernel, IntervalOrientationFilterIsExactWhereItDecides) {
   EXPECT_GT(zeros, 1000u) << "the draws must hit exact zeros";
   EXPECT_GT(decided, 2000u);
   EXPECT_GT(ordinary_decided, ordinary * 99 / 100) << "the filter must settle what is far from degenerate";
+}
+
+// ModelPlane decides, on the input doubles, what the view-space plane of three points decides after
+// the exact view map: which side of the plane a point is on seen from the viewer, and where a
+// segment crosses it. Checked against that evaluation on Epeck for random views, on random points,
+// on a coarse grid (points in the plane, edge-on planes skipped), far from the origin and of mixed
+// magnitude, with input points and with exact constructed ones (points in the plane among them).
+TEST(ExactKernel, ModelPlaneAgreesWithTheViewSpacePlane) {
+  using FT = ExactKernel::FT;
+  using Point3 = ExactKernel::Point_3;
+  std::mt19937_64 random(20261204);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  auto value = [&](int mode) {
+    switch (mode) {
+      case 0: return unit(random);
+      case 1: return std::round(unit(random) * 2) / 2;                               // coarse grid
+      case 2: return 1e8 + std::round(unit(random) * 4);                              // far from the origin
+      default: return unit(random) < 0 ? unit(random) * 1e-9 : unit(random) * 1e9;  // mixed magnitude
+    }
+  };
+  auto point = [&](int mode) { return Vec3{value(mode), value(mode), value(mode)}; };
+  auto exact_point = [](const Vec3& p) { return Point3(p[0], p[1], p[2]); };
+  std::size_t checked = 0, zeros = 0, crossings = 0;
+  for (int i = 0; i < 6000; ++i) {
+    const int mode = i % 4;
+    View view;
+    if (i % 3 == 0) named_view(i % 2 ? "iso" : "front", view);
+    else view.direction = {std::round(unit(random) * 2), std::round(unit(random) * 2), unit(random)}, view.up = {0, 0, 1};
+    if (view_defect(view)) continue;
+    const ViewFrame<ExactKernel> frame(view);
+    const Vec3 a = point(mode), b = point(mode), c = point(mode);
+    const auto va = frame.to_view(a), vb = frame.to_view(b), vc = frame.to_view(c);
+    const FT ux = vb.x - va.x, uy = vb.y - va.y, uz = vb.z - va.z, wx = vc.x - va.x, wy = vc.y - va.y, wz = vc.z - va.z;
+    const FT nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+    if (CGAL::is_zero(nz)) continue;  // edge-on (or collinear): no source has such a plane
+    const FT pa = -nx / nz, pb = -ny / nz, pc = va.z - pa * va.x - pb * va.y;
+    auto f = [&](const ViewPoint<ExactKernel>& q) { return pa * q.x + pb * q.y + pc - q.z; };
+    const ModelPlane plane(a, b, c, view.direction);
+    // An input point, or an exact point: one of the plane (a + s (b - a) + t (c - a)) or off it.
+    const Vec3 q = point(mode), r = point(mode);
+    const FT s(std::round(unit(random) * 4) / 4), t(std::round(unit(random) * 4) / 4);
+    const Point3 in_plane = exact_point(a) + s * (exact_point(b) - exact_point(a)) + t * (exact_point(c) - exact_point(a));
+    const Point3 off = CGAL::midpoint(exact_point(q), exact_point(r));
+    ASSERT_EQ(plane.nearer_than(q), CGAL::sign(f(frame.to_view(q)))) << i;
+    ASSERT_EQ(plane.nearer_than(in_plane), 0) << i;
+    ASSERT_EQ(plane.nearer_than(off), CGAL::sign(f(frame.to_view(off)))) << i;
+    zeros += plane.nearer_than(q) == 0;
+    ++checked;
+    const FT f0 = f(frame.to_view(q)), f1 = f(frame.to_view(r));
+    if (CGAL::sign(f0) * CGAL::sign(f1) < 0) {
+      ASSERT_EQ(plane.crossing(q, r), f0 / (f0 - f1)) << i;
+      ASSERT_EQ(plane.crossing(exact_point(q), exact_point(r)), f0 / (f0 - f1)) << i;
+      ++crossings;
+    }
+  }
+  EXPECT_GT(checked, 3000u);
+  EXPECT_GT(zeros, 100u) << "the grid must put input points in the plane";
+  EXPECT_GT(crossings, 500u);
 }
 
 // line_misses_box is a filter: "true" must be the exact answer (every corner of the box strictly

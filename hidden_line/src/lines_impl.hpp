@@ -28,6 +28,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 
@@ -178,17 +179,32 @@ class Classifier {
     for (std::size_t m = 0; m < meshes.size(); ++m) source_of_face_[m].assign(meshes[m].faces.size(), -1);
     for (std::size_t s = 0; s < sources.polygons.size(); ++s)
       for (std::uint32_t f : sources.polygons[s].faces) source_of_face_[sources.polygons[s].mesh][f] = std::int32_t(s);
-    // The sources through each mesh vertex: their planes contain it exactly.
-    sources_at_vertex_.resize(meshes.size());
-    for (std::size_t m = 0; m < meshes.size(); ++m) sources_at_vertex_[m].resize(meshes[m].vertices.size());
-    for (std::size_t s = 0; s < sources.polygons.size(); ++s) {
-      const auto& sp = sources.polygons[s];
-      for (std::uint32_t f : sp.faces)
-        for (std::uint32_t v : meshes[sp.mesh].faces[f]) {
-          auto& at = sources_at_vertex_[sp.mesh][v];
-          if (at.empty() || at.back() != std::int32_t(s)) at.push_back(std::int32_t(s));  // sources come in order
-        }
+    // The sources through each mesh vertex: their planes contain it exactly. Counted, then filled;
+    // sources come in order, so each vertex's list is sorted.
+    vertex_sources_.resize(meshes.size());
+    std::vector<std::vector<std::int32_t>> last(meshes.size());
+    auto each_vertex_source = [&](auto visit) {  // visit(mesh, vertex, source), each triple once
+      for (std::size_t m = 0; m < meshes.size(); ++m) last[m].assign(meshes[m].vertices.size(), -1);
+      for (std::size_t s = 0; s < sources.polygons.size(); ++s) {
+        const auto& sp = sources.polygons[s];
+        for (std::uint32_t f : sp.faces)
+          for (std::uint32_t v : meshes[sp.mesh].faces[f])
+            if (last[sp.mesh][v] != std::int32_t(s)) {
+              last[sp.mesh][v] = std::int32_t(s);
+              visit(sp.mesh, v, std::int32_t(s));
+            }
+      }
+    };
+    for (std::size_t m = 0; m < meshes.size(); ++m) vertex_sources_[m].start.assign(meshes[m].vertices.size() + 1, 0);
+    each_vertex_source([&](std::uint32_t m, std::uint32_t v, std::int32_t) { ++vertex_sources_[m].start[v + 1]; });
+    std::vector<std::vector<std::uint32_t>> next(meshes.size());
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      auto& vs = vertex_sources_[m];
+      std::partial_sum(vs.start.begin(), vs.start.end(), vs.start.begin());
+      vs.sources.resize(vs.start.back());
+      next[m].assign(vs.start.begin(), vs.start.end() - 1);
     }
+    each_vertex_source([&](std::uint32_t m, std::uint32_t v, std::int32_t s) { vertex_sources_[m].sources[next[m][v]++] = s; });
     boxes_.reserve(covers_.size());
     for (std::uint32_t i = 0; i < covers_.size(); ++i) grid_.insert(i, boxes_.emplace_back(box_of(*covers_[i].polygon)));
     // Orthographic views on the exact kernel decide depths in model space, on the input doubles.
@@ -342,8 +358,8 @@ class Classifier {
     // A mesh vertex lies exactly in the plane of every source through it.
     auto in_plane = [&](std::uint32_t v, std::int32_t source) {
       if (v == kNoVertex) return false;
-      const auto& at = sources_at_vertex_[q.mesh][v];
-      return std::binary_search(at.begin(), at.end(), source);
+      const VertexSources& vs = vertex_sources_[q.mesh];
+      return std::binary_search(vs.sources.begin() + vs.start[v], vs.sources.begin() + vs.start[v + 1], source);
     };
     // The line against the plane of a source, once per source.
     auto depth_of_source = [&](std::uint32_t source) -> const Depth<K>& {
@@ -497,7 +513,12 @@ class Classifier {
   std::vector<ModelPlane> model_planes_;  // per source, in orthographic views on the exact kernel
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
-  std::vector<std::vector<std::vector<std::int32_t>>> sources_at_vertex_;  // per mesh, per vertex, sorted
+  // Per mesh: vertex v's sources are sources[start[v] .. start[v + 1]), sorted.
+  struct VertexSources {
+    std::vector<std::uint32_t> start;
+    std::vector<std::int32_t> sources;
+  };
+  std::vector<VertexSources> vertex_sources_;
   std::vector<CGAL::Bbox_2> boxes_;  // of covers_' polygons
   std::vector<double> nearest_;      // nearest_depth of covers_' polygons
   LooseGrid grid_, edge_on_grid_;

@@ -88,7 +88,8 @@ inline LineRun run_lines(const std::vector<Mesh>& meshes, const View& view, cons
 
 // The meshes with every face reversed, first corner kept (a fan from it stays the same fan).
 inline std::vector<Mesh> reversed_meshes(std::vector<Mesh> meshes) {
-  for (Mesh& m : meshes)
+  for (Mesh& m : meshes) {
+    m.topology.reset();
     for (std::size_t f = 0; f < m.faces.size(); ++f) {
       auto& face = m.faces[f];
       const std::size_t n = face.size();
@@ -98,6 +99,7 @@ inline std::vector<Mesh> reversed_meshes(std::vector<Mesh> meshes) {
       for (std::size_t j = 0; j < n; ++j) bits |= ((m.fan_edges[f] >> (n - 1 - j)) & 1u) << j;
       m.fan_edges[f] = bits;
     }
+  }
   return meshes;
 }
 

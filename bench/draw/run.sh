@@ -32,6 +32,9 @@
 #   lineart_s        the peer's lineart_seconds (Line Art's own timer, minimum of REPEAT runs),
 #                    or "failed"
 #   ratio            hlr_s / lineart_s (> 1: hlr is slower), or "n/a"
+#   hlr_warm_s       the same work timed as the peer is: the least stats.seconds of WARM_RUNS runs
+#                    in one process (build/bench/draw_warm; its header says why), or "n/a"
+#   warm_ratio       hlr_warm_s / lineart_s
 #   hlr_vis_len, hlr_hid_len
 #                    stats.drawn_visible_length / drawn_hidden_length: 2D length of what the
 #                    drawing shows after ISO 128 precedence (hidden under visible removed,
@@ -58,6 +61,8 @@
 #   HLR      hlr binary                          (default build/app/hlr)
 #   PYTHON   python for JSON/CSV work            (default /usr/bin/python3)
 #   OUT      CSV to write                        (default bench/draw/results/<UTC date>.csv)
+#   WARM     the draw_warm binary (default build/bench/draw_warm; WARM=0: no warm runs)
+#   WARM_RUNS  runs per case in that one process (default 5, as the peer's REPEAT)
 #   KEEP=DIR keep hlr's JSON (the last run's), stats and logs, and the peer's SVG/JSON/logs in
 #            DIR (default: a temp dir, removed at the end unless something failed)
 #   STROKES=1  with KEEP: after the timed runs, run the peer's lineart_measure.py once more per
@@ -81,6 +86,8 @@ bench_meshes "$@"
 bench_workdir
 mkdir -p "$(dirname "$out")"
 bench_banner "(hlr draw, exact kernel)"
+warm="${WARM:-$root/build/bench/draw_warm}"
+if [ "$warm" != 0 ] && [ ! -x "$warm" ]; then echo "no draw_warm at $warm: hlr_warm_s will be n/a" >&2; warm=0; fi
 
 for mesh in "${meshes[@]}"; do
   name="$(basename "${mesh%.*}")"
@@ -88,6 +95,10 @@ for mesh in "${meshes[@]}"; do
   for view in ${views//,/ }; do
     bench_hlr "$name" "$view" exact "$work/hlr_${name}_${view}" \
       draw "$mesh" --view "$view" --kernel exact || any_fail=1
+    if [ "$warm" != 0 ]; then
+      "$warm" "$mesh" "$view" "${WARM_RUNS:-5}" "${hlr_threads:-0}" >"$work/warm_${name}_${view}.json" \
+        || { echo "draw_warm failed on $name $view" >&2; rm -f "$work/warm_${name}_${view}.json"; any_fail=1; }
+    fi
   done
   bench_peer "$mesh" "$name"
   if [ "${STROKES:-0}" = 1 ] && [ "$keep" = 1 ] && [ "$have_peer" = 1 ]; then
@@ -101,7 +112,7 @@ for mesh in "${meshes[@]}"; do
 done
 
 BENCH_DIR="$bench_dir" "$py" - "$rows" "$work" "$out" <<'EOF'
-import csv, os, sys
+import csv, json, os, sys
 sys.path.insert(0, os.environ["BENCH_DIR"])
 from common import load_hlr, load_peer, sec
 rows_tsv, work, out = sys.argv[1:4]
@@ -116,7 +127,14 @@ def num(x):
 
 cols = ["mesh", "view", "faces", "feature_lines", "hlr_s", "hlr_lines_s", "hlr_intersections_s",
         "hlr_precedence_s", "lineart_s", "ratio", "hlr_vis_len", "hlr_hid_len", "hlr_hid_len_all",
-        "lineart_vis_len", "lineart_hid_len", "vis_len_ratio", "hid_len_ratio"]
+        "lineart_vis_len", "lineart_hid_len", "vis_len_ratio", "hid_len_ratio", "hlr_warm_s", "warm_ratio"]
+
+def warm_seconds(key):
+    try:
+        with open(os.path.join(work, "warm_%s_%s.json" % key)) as f:
+            return json.load(f)["seconds"]
+    except (OSError, ValueError, KeyError):
+        return None
 stages = ["read", "sources", "sort", "intersections", "lines", "precedence", "write"]
 
 def stage(ex, s):
@@ -125,8 +143,8 @@ def stage(ex, s):
     g = ex.get("stage_seconds", {})
     return "%.6f" % g[s] if s in g else "n/a"
 
-fmt = "%-20s %-5s %6s %6s %9s %9s %9s %9s %9s %6s %10s %10s %10s %10s %10s %6s %6s"
-timed = (4, 5, 6, 7, 8)   # columns printed as seconds, cut to 9 characters
+fmt = "%-20s %-5s %6s %6s %9s %9s %9s %9s %9s %6s %10s %10s %10s %10s %10s %6s %6s %9s %6s"
+timed = (4, 5, 6, 7, 8, 17)   # columns printed as seconds, cut to 9 characters
 total = dict.fromkeys(stages, 0.0)
 with open(out, "w", newline="") as f:
     w = csv.writer(f)
@@ -147,6 +165,8 @@ with open(out, "w", newline="") as f:
                num(la), ratio(ex["seconds"] if ex else None, la, "%.2f"),
                num(hv), num(hh), num(ex["bench_hidden_length_all"] if ex else None),
                num(lav), num(lah), ratio(hv, lav, "%.4f"), ratio(hh, lah, "%.4f")]
+        hw = warm_seconds(key)
+        row += ["%.6f" % hw if hw is not None else "n/a", ratio(hw, la, "%.2f")]
         w.writerow(row)
         st = ""
         if ex:
@@ -157,6 +177,13 @@ with open(out, "w", newline="") as f:
         print(fmt % tuple(
             (c[:9] if i in timed else c) if isinstance(c, str) else str(c)
             for i, c in enumerate(row)) + " | " + st)
+import math
+for col in ("ratio", "warm_ratio"):
+    with open(out) as f:
+        rs = [float(r[col]) for r in csv.DictReader(f) if r[col] not in ("n/a", "")]
+    if rs:
+        print("%s: geometric mean %.2f, median %.2f, max %.2f over %d cases" % (
+            col, math.exp(sum(map(math.log, rs)) / len(rs)), sorted(rs)[len(rs) // 2], max(rs), len(rs)))
 s = sum(total.values())
 if s:
     print("\nhlr stage split, summed over all cases: " +

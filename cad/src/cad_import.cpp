@@ -412,7 +412,6 @@ CadPart make_part(const TopoDS_Shape& body, const std::string& path, const std::
       if (it->second & 2u) mesh.source_edges[k] |= std::uint8_t(1u << (i + 4));
     }
   }
-  mesh.topology.reset();  // its edge uses carry the source edges set above
   mesh.source_curves = std::move(curves);
   mesh.group_names.clear();
   for (int f = 1; f <= faces.Extent(); ++f) mesh.group_names.push_back("face " + std::to_string(f));

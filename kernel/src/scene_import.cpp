@@ -237,10 +237,9 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
   mesh.vertices = std::move(raw.vertices);
   if (groups) mesh.group_names = std::move(raw.group_names);
 
-  mesh.topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
-  const std::vector<EdgeUse>& uses = mesh.topology->uses;
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
   const std::size_t nonmanifold = count_nonmanifold(mesh, uses);
-  const std::size_t inward = mesh.topology->sides.inward;
+  const std::size_t inward = component_sides(mesh, uses).inward;
   for (const auto& w : raw.warnings) report.warnings.push_back(path + ": " + w);
   if (degenerate > 0)
     report.warnings.push_back(path + ": " + std::to_string(degenerate) +
@@ -317,7 +316,7 @@ void Scene::add(Mesh mesh, const ImportReport& report) {
   input.welded_vertices += report.welded_vertices;
   input.parts.push_back(mesh.name);
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
-  if (!mesh.topology) mesh.topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
+  mesh.topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
   meshes.push_back(std::move(mesh));
 }
 

@@ -95,12 +95,13 @@ TEST_F(CliLimits, TimeoutStopsTheRunWithOneLineAndNoFile) {
 TEST_F(CliLimits, BatchTimeoutStopsTheRunningJobsAndRunsNoMore) {
   // One job at a time: a tetrahedron, done at once, then two long ones. At the batch's --timeout
   // the first long one is stopped (no file, no temporary file) and the second is not run. Nothing
-  // is asserted on speed but that a tetrahedron takes less than the timeout and the grid more.
+  // is asserted on speed but that a tetrahedron takes less than the timeout and the grid with its
+  // shadows far more (about 30 s on one thread in 2026; the drawing alone took 3 s, too close).
   bumpy_grid(300);
   spit(dir_ / "tetra.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   spit(dir_ / "batch.json", R"({"format": "hlr-batch/1", "jobs": [
       {"command": "draw", "meshes": ["tetra.off"], "outputs": ["out/tetra.svg"]},
-      {"command": "draw", "meshes": ["grid.off"], "options": ["--threads", "1"],
+      {"command": "draw", "meshes": ["grid.off"], "options": ["--threads", "1", "--sun", "1,2,-3"],
        "outputs": ["out/a.svg", "out/a.json", "out/a.dxf"]},
       {"command": "surfaces", "meshes": ["grid.off"], "outputs": ["out/b.json"]}]})");
   const Outcome run = hlr({"batch", (dir_ / "batch.json").string(), "--jobs", "1", "--timeout", "4"});

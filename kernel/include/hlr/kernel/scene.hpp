@@ -93,9 +93,8 @@ struct Mesh {
   std::vector<SourceCurve> source_curves;
   std::string name;  // the part's name where the source names it (a STEP product), else empty
   // Its edge uses, components and coplanar groups (mesh_edges.hpp: topology_of), found once by
-  // the import (which reads its warnings from them) for every stage and view of the scene, or by
-  // Scene::add for a mesh made otherwise; null for a mesh built by hand. Whatever changes a mesh's
-  // faces, vertices or source edges after that must reset it.
+  // Scene::add for every stage and view of the scene; null for a mesh that no Scene holds.
+  // Whatever changes a held mesh's faces or vertices must reset it.
   std::shared_ptr<const MeshTopology> topology;
 };
 

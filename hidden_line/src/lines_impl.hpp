@@ -147,8 +147,19 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   for (const auto& h : polygon.holes) scan(h);
   sort_unique(ts);
   std::vector<std::pair<FT, FT>> out;
+  // A span that ends at the line's own end a (or b) meets no boundary inside, so it lies where
+  // that end lies when the end is off the boundary: decided on the end itself, without making the
+  // span's middle. Only an end on the boundary leaves it to the middle.
+  auto end_side = [&](std::size_t i) {
+    if (!unit) return 0;
+    int side = 0;
+    if (i == 0) side = clip::side_of_polygon(polygon, line.a);
+    if (side == 0 && i + 2 == ts.size()) side = clip::side_of_polygon(polygon, line.b);
+    return side;
+  };
   for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
-    const int side = clip::side_of_polygon(polygon, line.at((ts[i] + ts[i + 1]) / 2));
+    int side = end_side(i);
+    if (side == 0) side = clip::side_of_polygon(polygon, line.at((ts[i] + ts[i + 1]) / 2));
     if (closed ? side < 0 : side <= 0) continue;
     if (!out.empty() && out.back().second == ts[i]) out.back().second = ts[i + 1];
     else out.emplace_back(ts[i], ts[i + 1]);

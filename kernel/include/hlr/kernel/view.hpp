@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -90,6 +91,43 @@ struct ViewPoint {
   typename Geometry<K>::FT x, y, z;
 };
 
+namespace view_detail {
+// One view coordinate of an input point on the exact kernel, row · p with an exact basis row, as a
+// single lazy number: its interval from the row's intervals and the doubles, its exact value from
+// the row's exact values when a predicate first needs it. The same number as the sum of products
+// plain arithmetic would make, without its chain of lazy nodes (about eleven per point in an iso
+// view), each of which an exact evaluation would visit. Built on CGAL's Lazy_exact_nt_rep, as
+// CGAL's own constants are (CGAL/Lazy_exact_nt.h).
+using ExactRows = std::array<std::array<ExactKernel::FT, 3>, 3>;
+template <class ET>
+class RowDotRep final : public CGAL::Lazy_exact_nt_rep<ET> {
+  using Base = CGAL::Lazy_exact_nt_rep<ET>;
+
+ public:
+  // Under upward rounding (CGAL::Protect_FPU_rounding), as CGAL's unprotected intervals need.
+  RowDotRep(std::shared_ptr<const ExactRows> rows, int row, const Vec3& p)
+      : Base(interval((*rows)[row], p)), rows_(std::move(rows)), row_(row), p_(p) {}
+
+  void update_exact() const override {
+    const auto& row = (*rows_)[row_];
+    ET sum(0);
+    for (int k = 0; k < 3; ++k)
+      if (!CGAL::is_zero(row[k])) sum += row[k].exact() * ET(p_[k]);
+    auto* exact = new typename Base::Indirect(std::move(sum));
+    this->set_at(exact);
+    this->set_ptr(exact);
+  }
+
+ private:
+  static CGAL::Interval_nt<false> interval(const std::array<ExactKernel::FT, 3>& row, const Vec3& p) {
+    return CGAL::approx(row[0]) * p[0] + CGAL::approx(row[1]) * p[1] + CGAL::approx(row[2]) * p[2];
+  }
+  std::shared_ptr<const ExactRows> rows_;
+  int row_;
+  Vec3 p_;
+};
+}  // namespace view_detail
+
 // The exact, unnormalized view basis for kernel K.
 template <GeometryKernel K>
 class ViewFrame {
@@ -125,6 +163,11 @@ class ViewFrame {
     cross(d, u, x_);
     cross(x_, d, y_);
     for (int i = 0; i < 3; ++i) z_[i] = -d[i];
+    if constexpr (std::is_same_v<FT, ExactKernel::FT>) {
+      auto rows = std::make_shared<view_detail::ExactRows>();
+      for (int k = 0; k < 3; ++k) (*rows)[0][k] = x_[k], (*rows)[1][k] = y_[k], (*rows)[2][k] = z_[k];
+      rows_ = std::move(rows);
+    }
     for (int i = 0; i < 3; ++i) {
       const FT* axis = i == 0 ? x_ : i == 1 ? y_ : z_;
       for (int k = 0; k < 3; ++k)
@@ -159,7 +202,16 @@ class ViewFrame {
 
  public:
 
-  ViewPoint<K> to_view(const Vec3& p) const { return to_view(FT(p[0]), FT(p[1]), FT(p[2])); }
+  ViewPoint<K> to_view(const Vec3& p) const {
+    if constexpr (std::is_same_v<FT, ExactKernel::FT>)
+      if (!view_.eye) {
+        using ET = ExactKernel::FT::Exact_type;
+        CGAL::Protect_FPU_rounding<true> protect;
+        return {FT(new view_detail::RowDotRep<ET>(rows_, 0, p)), FT(new view_detail::RowDotRep<ET>(rows_, 1, p)),
+                FT(new view_detail::RowDotRep<ET>(rows_, 2, p))};
+      }
+    return to_view(FT(p[0]), FT(p[1]), FT(p[2]));
+  }
   // A model-space point given in the kernel's number type (a constructed point, on ExactKernel).
   // Perspective: the point must lie in front of the near plane (eye_depth >= near()).
   ViewPoint<K> to_view(const FT& px, const FT& py, const FT& pz) const {
@@ -277,6 +329,7 @@ class ViewFrame {
 
   View view_;
   FT x_[3], y_[3], z_[3];
+  std::shared_ptr<const view_detail::ExactRows> rows_;  // the exact kernel's X, Y, Z, for RowDotRep
   FT d_[3], e_[3], near_;  // perspective: the direction, the eye, ν
   int coefficient_[3][3];  // per axis and component: 0, 1 or -1 when the coefficient is that, else 2
   double scale_[3];

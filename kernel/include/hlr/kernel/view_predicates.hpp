@@ -73,9 +73,12 @@ class ModelPlane {
 
   // The parameter t where the segment p0 + t (p1 - p0) meets the plane, for ends strictly on
   // either side: volume(p0) / (volume(p0) - volume(p1)), the same in view space (a linear map
-  // keeps ratios along a line).
-  template <class P>
-  FT crossing(const P& p0, const P& p1) const {
+  // keeps ratios along a line). Of input points, one lazy number (CrossingRep).
+  FT crossing(const Vec3& p0, const Vec3& p1) const {
+    CGAL::Protect_FPU_rounding<true> protect;
+    return FT(new CrossingRep<FT::Exact_type>({a_, b_, c_}, p0, p1));
+  }
+  FT crossing(const Point3& p0, const Point3& p1) const {
     const FT v0 = volume(p0), v1 = volume(p1);
     return v0 / (v0 - v1);
   }
@@ -95,28 +98,53 @@ class ModelPlane {
   int volume_sign(const Vec3& p) const { return CGAL::orientation(ip(a_), ip(b_), ip(c_), ip(p)); }
   int volume_sign(const Point3& p) const {
     return filtered_sign([&]<class NT>(std::type_identity<NT>) {
-      auto coordinate = [&](const FT& v) {
+      auto coordinate = [](const FT& v) {
         if constexpr (std::is_same_v<NT, CGAL::Exact_rational>) return NT(v.exact());
         else return NT(CGAL::to_interval(v));
       };
-      const NT px = coordinate(p.x()) - NT(a_[0]), py = coordinate(p.y()) - NT(a_[1]), pz = coordinate(p.z()) - NT(a_[2]);
-      const NT ux = NT(b_[0]) - NT(a_[0]), uy = NT(b_[1]) - NT(a_[1]), uz = NT(b_[2]) - NT(a_[2]);
-      const NT wx = NT(c_[0]) - NT(a_[0]), wy = NT(c_[1]) - NT(a_[1]), wz = NT(c_[2]) - NT(a_[2]);
-      return CGAL::sign(px * (uy * wz - uz * wy) + py * (uz * wx - ux * wz) + pz * (ux * wy - uy * wx));
+      return CGAL::sign(volume<NT>({a_, b_, c_}, coordinate(p.x()), coordinate(p.y()), coordinate(p.z())));
     });
   }
-  template <class P>
-  FT volume(const P& p) const {
-    auto coordinate = [&](int k) -> FT {
-      if constexpr (std::is_same_v<P, Vec3>) return FT(p[k]);
-      else return p.cartesian(k);
-    };
-    const FT ax(a_[0]), ay(a_[1]), az(a_[2]);
-    const FT px = coordinate(0) - ax, py = coordinate(1) - ay, pz = coordinate(2) - az;
-    const FT ux = FT(b_[0]) - ax, uy = FT(b_[1]) - ay, uz = FT(b_[2]) - az;
-    const FT wx = FT(c_[0]) - ax, wy = FT(c_[1]) - ay, wz = FT(c_[2]) - az;
-    return px * (uy * wz - uz * wy) + py * (uz * wx - ux * wz) + pz * (ux * wy - uy * wx);
+  // (b - a) × (c - a) · (p - a) in NT, from the doubles and p's coordinates in NT.
+  template <class NT>
+  static NT volume(const std::array<Vec3, 3>& plane, const NT& px, const NT& py, const NT& pz) {
+    const auto& [a, b, c] = plane;
+    const NT ax(a[0]), ay(a[1]), az(a[2]);
+    const NT qx = px - ax, qy = py - ay, qz = pz - az;
+    const NT ux = NT(b[0]) - ax, uy = NT(b[1]) - ay, uz = NT(b[2]) - az;
+    const NT wx = NT(c[0]) - ax, wy = NT(c[1]) - ay, wz = NT(c[2]) - az;
+    return qx * (uy * wz - uz * wy) + qy * (uz * wx - ux * wz) + qz * (ux * wy - uy * wx);
   }
+  FT volume(const Point3& p) const { return volume<FT>({a_, b_, c_}, p.x(), p.y(), p.z()); }
+
+  // The crossing parameter of two input points as one lazy number: its interval from the doubles
+  // in interval arithmetic, its exact value from them when a comparison first needs it, instead of
+  // the thirty-odd lazy nodes of the same expression in FT (CGAL/Lazy_exact_nt.h's pattern, as
+  // view.hpp's RowDotRep).
+  template <class ET>
+  class CrossingRep final : public CGAL::Lazy_exact_nt_rep<ET> {
+    using Base = CGAL::Lazy_exact_nt_rep<ET>;
+
+   public:
+    // Under upward rounding (CGAL::Protect_FPU_rounding), as CGAL's unprotected intervals need.
+    CrossingRep(const std::array<Vec3, 3>& plane, const Vec3& p0, const Vec3& p1)
+        : Base(ratio<CGAL::Interval_nt<false>>(plane, p0, p1)), plane_(plane), p0_(p0), p1_(p1) {}
+    void update_exact() const override {
+      auto* exact = new typename Base::Indirect(ratio<ET>(plane_, p0_, p1_));
+      this->set_at(exact);
+      this->set_ptr(exact);
+    }
+
+   private:
+    template <class NT>
+    static NT ratio(const std::array<Vec3, 3>& plane, const Vec3& p0, const Vec3& p1) {
+      const NT v0 = volume<NT>(plane, NT(p0[0]), NT(p0[1]), NT(p0[2]));
+      const NT v1 = volume<NT>(plane, NT(p1[0]), NT(p1[1]), NT(p1[2]));
+      return v0 / (v0 - v1);
+    }
+    std::array<Vec3, 3> plane_;
+    Vec3 p0_, p1_;
+  };
 
   Vec3 a_, b_, c_;
   int turn_;  // orientation of the images of a, b, c: the sign of the plane's view normal's z

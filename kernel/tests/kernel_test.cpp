@@ -194,6 +194,52 @@ TEST(ExactKernel, IntervalOrientationFilterIsExactWhereItDecides) {
   EXPECT_GT(ordinary_decided, ordinary * 99 / 100) << "the filter must settle what is far from degenerate";
 }
 
+// The view coordinates of an input point are one lazy number each (view.hpp's RowDotRep): their
+// intervals must hold, and their exact values be, the dot products with the exact basis of
+// DESIGN.md rule 1 (X = d × up, Y = X × d, Z = -d), for named views and random directions and up
+// vectors, on random points, on a coarse grid, far from the origin and of mixed magnitude.
+TEST(ExactKernel, ViewCoordinatesAreTheExactDotProducts) {
+  using Q = CGAL::Exact_rational;
+  std::mt19937_64 random(20261205);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  auto value = [&](int mode) {
+    switch (mode) {
+      case 0: return unit(random);
+      case 1: return std::round(unit(random) * 2) / 2;                               // coarse grid
+      case 2: return 1e8 + unit(random);                                              // far from the origin
+      default: return unit(random) < 0 ? unit(random) * 1e-9 : unit(random) * 1e9;  // mixed magnitude
+    }
+  };
+  auto cross = [](const std::array<Q, 3>& a, const std::array<Q, 3>& b) {
+    return std::array<Q, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  std::size_t checked = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const int mode = i % 4;
+    View view;
+    if (i % 4 == 0) named_view(i % 8 ? "iso" : "top", view);
+    else view.direction = {value(mode), value(mode), value(mode)}, view.up = {unit(random), unit(random), unit(random)};
+    if (view_defect(view)) continue;
+    const ViewFrame<ExactKernel> frame(view);
+    const std::array<Q, 3> d{view.direction[0], view.direction[1], view.direction[2]};
+    const std::array<Q, 3> up{view.up[0], view.up[1], view.up[2]};
+    const std::array<Q, 3> x = cross(d, up), y = cross(x, d), z{-d[0], -d[1], -d[2]};
+    const Vec3 p{value(mode), value(mode), value(mode)};
+    const auto v = frame.to_view(p);
+    const ExactKernel::FT* coordinates[3] = {&v.x, &v.y, &v.z};
+    const std::array<Q, 3>* rows[3] = {&x, &y, &z};
+    for (int k = 0; k < 3; ++k) {
+      const auto approx = CGAL::to_interval(*coordinates[k]);  // before the exact value is asked for
+      const Q want = (*rows[k])[0] * Q(p[0]) + (*rows[k])[1] * Q(p[1]) + (*rows[k])[2] * Q(p[2]);
+      ASSERT_EQ(Q(coordinates[k]->exact()), want) << i << " axis " << k;
+      ASSERT_LE(Q(approx.first), want) << i << " axis " << k;
+      ASSERT_GE(Q(approx.second), want) << i << " axis " << k;
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 3500u);
+}
+
 // ModelPlane decides, on the input doubles, what the view-space plane of three points decides after
 // the exact view map: which side of the plane a point is on seen from the viewer, and where a
 // segment crosses it. Checked against that evaluation on Epeck for random views, on random points,

@@ -194,6 +194,18 @@ TEST(ExactKernel, IntervalOrientationFilterIsExactWhereItDecides) {
   EXPECT_GT(ordinary_decided, ordinary * 99 / 100) << "the filter must settle what is far from degenerate";
 }
 
+// A random double of the kinds that break predicates, by mode: 0 plain, 1 on a coarse grid (exact
+// zeros and ties), 2 far from the origin (on a grid there), 3 of mixed magnitude.
+double hard_value(std::mt19937_64& random, int mode) {
+  std::uniform_real_distribution<double> unit(-1, 1);
+  switch (mode) {
+    case 0: return unit(random);
+    case 1: return std::round(unit(random) * 2) / 2;
+    case 2: return 1e8 + std::round(unit(random) * 4);
+    default: return unit(random) < 0 ? unit(random) * 1e-9 : unit(random) * 1e9;
+  }
+}
+
 // The view coordinates of an input point are one lazy number each (view.hpp's RowDotRep): their
 // intervals must hold, and their exact values be, the dot products with the exact basis of
 // DESIGN.md rule 1 (X = d × up, Y = X × d, Z = -d), for named views and random directions and up
@@ -202,14 +214,7 @@ TEST(ExactKernel, ViewCoordinatesAreTheExactDotProducts) {
   using Q = CGAL::Exact_rational;
   std::mt19937_64 random(20261205);
   std::uniform_real_distribution<double> unit(-1, 1);
-  auto value = [&](int mode) {
-    switch (mode) {
-      case 0: return unit(random);
-      case 1: return std::round(unit(random) * 2) / 2;                               // coarse grid
-      case 2: return 1e8 + unit(random);                                              // far from the origin
-      default: return unit(random) < 0 ? unit(random) * 1e-9 : unit(random) * 1e9;  // mixed magnitude
-    }
-  };
+  auto value = [&](int mode) { return hard_value(random, mode); };
   auto cross = [](const std::array<Q, 3>& a, const std::array<Q, 3>& b) {
     return std::array<Q, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
   };
@@ -250,14 +255,7 @@ TEST(ExactKernel, ModelPlaneAgreesWithTheViewSpacePlane) {
   using Point3 = ExactKernel::Point_3;
   std::mt19937_64 random(20261204);
   std::uniform_real_distribution<double> unit(-1, 1);
-  auto value = [&](int mode) {
-    switch (mode) {
-      case 0: return unit(random);
-      case 1: return std::round(unit(random) * 2) / 2;                               // coarse grid
-      case 2: return 1e8 + std::round(unit(random) * 4);                              // far from the origin
-      default: return unit(random) < 0 ? unit(random) * 1e-9 : unit(random) * 1e9;  // mixed magnitude
-    }
-  };
+  auto value = [&](int mode) { return hard_value(random, mode); };
   auto point = [&](int mode) { return Vec3{value(mode), value(mode), value(mode)}; };
   auto exact_point = [](const Vec3& p) { return Point3(p[0], p[1], p[2]); };
   std::size_t checked = 0, zeros = 0, crossings = 0;

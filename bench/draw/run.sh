@@ -112,7 +112,7 @@ for mesh in "${meshes[@]}"; do
 done
 
 BENCH_DIR="$bench_dir" "$py" - "$rows" "$work" "$out" <<'EOF'
-import csv, json, os, sys
+import csv, json, math, os, sys
 sys.path.insert(0, os.environ["BENCH_DIR"])
 from common import load_hlr, load_peer, sec
 rows_tsv, work, out = sys.argv[1:4]
@@ -177,7 +177,6 @@ with open(out, "w", newline="") as f:
         print(fmt % tuple(
             (c[:9] if i in timed else c) if isinstance(c, str) else str(c)
             for i, c in enumerate(row)) + " | " + st)
-import math
 for col in ("ratio", "warm_ratio"):
     with open(out) as f:
         rs = [float(r[col]) for r in csv.DictReader(f) if r[col] not in ("n/a", "")]

@@ -86,12 +86,7 @@ class ModelPlane {
  private:
   using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
   static int sign_of_det(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& d) {
-    {
-      CGAL::Protect_FPU_rounding<true> protect;
-      const auto s = view_detail::det_with_direction<CGAL::Interval_nt<false>>(p, q, r, d);
-      if (CGAL::is_certain(s)) return CGAL::get_certain(s);
-    }
-    return view_detail::det_with_direction<CGAL::Exact_rational>(p, q, r, d);
+    return filtered_sign([&]<class NT>(std::type_identity<NT>) { return view_detail::det_with_direction<NT>(p, q, r, d); });
   }
   static IK::Point_3 ip(const Vec3& v) { return {v[0], v[1], v[2]}; }
   // sign((b - a) × (c - a) · (p - a)): Epick's orientation, exact on doubles.

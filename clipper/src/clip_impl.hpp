@@ -54,20 +54,23 @@ bool strictly_between(const Point<K>& a, const Point<K>& b, const Point<K>& q) {
   return G::compare_xy(a, q) * G::compare_xy(q, b) > 0;
 }
 
-// +1 when q is inside the contour's bounded region, 0 on its boundary, -1 outside.
+// +1 when q is inside the contour's bounded region, 0 on its boundary, -1 outside. With
+// `on_line`, q lies on a line and on_line[i] is 0 where corner i does (side_of_polygon_on_line).
 template <class K>
-int side_of_contour(const Contour<K>& contour, const Point<K>& q) {
+int side_of_contour(const Contour<K>& contour, const Point<K>& q, const int* on_line = nullptr) {
   using G = Geometry<K>;
   const auto& pts = contour.points;
   const std::size_t n = pts.size();
   bool inside = false;
   for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = i + 1 == n ? 0 : i + 1;
     const Point<K>& a = pts[i];
-    const Point<K>& b = pts[i + 1 == n ? 0 : i + 1];
+    const Point<K>& b = pts[j];
     const int ya = G::compare_y(a, q), yb = G::compare_y(b, q);
     if (ya > 0 && yb > 0) continue;
     if (ya < 0 && yb < 0) continue;
-    const int o = G::orientation(a, b, q);
+    const bool along_line = G::exact_constructions && on_line && on_line[i] == 0 && on_line[j] == 0;
+    const int o = along_line ? 0 : G::orientation(a, b, q);
     if (o == 0 && G::compare_xy(a, q) * G::compare_xy(q, b) >= 0) return 0;
     // Half-open rule: a vertex at q's height counts as below.
     if ((ya > 0) != (yb > 0)) {
@@ -89,6 +92,22 @@ int side_of_polygon(const Polygon<K>& polygon, const typename Geometry<K>::Point
     int h = detail::side_of_contour(hole, q);
     if (h == 0) return 0;
     if (h > 0) return -1;
+  }
+  return 1;
+}
+
+template <class K>
+int side_of_polygon_on_line(const Polygon<K>& polygon, std::span<const int> corner_sides,
+                            const typename Geometry<K>::Point& q) {
+  const int* sides = corner_sides.data();
+  const int s = detail::side_of_contour(polygon.outer, q, sides);
+  if (s <= 0) return s;
+  sides += polygon.outer.size();
+  for (const auto& hole : polygon.holes) {
+    const int h = detail::side_of_contour(hole, q, sides);
+    if (h == 0) return 0;
+    if (h > 0) return -1;
+    sides += hole.size();
   }
   return 1;
 }

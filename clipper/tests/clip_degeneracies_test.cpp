@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -361,6 +364,56 @@ TEST(ClipDegeneracies, ClipHoleTouchingOuterAwayFromSubject) {
   // Inside: the subject above the line x + y = 10, less the hole's part; outside: the rest.
   EXPECT_EQ(r.inside.size(), 1u);
   EXPECT_EQ(r.outside.size(), 2u);
+}
+
+
+// side_of_polygon_on_line knows the edges along the line without arithmetic; it must say what
+// side_of_polygon says for every point on the line: its ends and points constructed on it. Grid
+// corners, so that corners on the line, edges along it and points on the boundary are common.
+TEST(SideOfPolygonOnLine, AgreesWithSideOfPolygon) {
+  std::mt19937 rng(20261204);
+  auto grid = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  // A closed polyline around a centre, corners snapped to the grid (it may touch or cross itself:
+  // both functions count crossings alike).
+  auto star = [&](LineTable<K>& lines, int cx, int cy, int radius) {
+    std::vector<Pt> pts;
+    const int n = grid(3, 9);
+    for (int k = 0; k < n; ++k) {
+      const double angle = 2 * std::numbers::pi * (k + 0.4 * grid(0, 2)) / n;
+      const double r = grid(1, radius);
+      pts.push_back(G::point(cx + std::round(r * std::cos(angle)), cy + std::round(r * std::sin(angle))));
+    }
+    return make_contour<K>(pts, lines);
+  };
+  int on_boundary = 0, along_edge = 0;
+  for (int draw = 0; draw < 3000; ++draw) {
+    LineTable<K> lines;
+    Polygon<K> polygon{star(lines, 0, 0, 5), {}};
+    if (grid(0, 1)) polygon.holes.push_back(star(lines, grid(-1, 1), grid(-1, 1), 2));
+    // The line: through two grid points, or along an edge of the outer contour.
+    Pt a = G::point(grid(-5, 5), grid(-5, 5)), b = G::point(grid(-5, 5), grid(-5, 5));
+    if (grid(0, 1)) {
+      const std::size_t i = std::size_t(grid(0, int(polygon.outer.size()) - 1));
+      a = polygon.outer.points[i];
+      b = polygon.outer.points[(i + 1) % polygon.outer.size()];
+    }
+    if (G::equal(a, b)) continue;
+    std::vector<int> sides;
+    for (const Contour<K>* c = &polygon.outer; c; c = c == &polygon.outer && !polygon.holes.empty() ? &polygon.holes[0] : nullptr)
+      for (const Pt& p : c->points) sides.push_back(G::orientation(a, b, p));
+    for (int k = -8; k <= 16; ++k) {
+      const G::FT t = G::FT(k) / G::FT(8);
+      const Pt q = k == 0 ? a : k == 8 ? b : G::point(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+      const int expected = side_of_polygon(polygon, q);
+      ASSERT_EQ(side_of_polygon_on_line<K>(polygon, sides, q), expected) << "draw " << draw << ", t = " << k << "/8";
+      on_boundary += expected == 0;
+    }
+    for (std::size_t i = 0; i < polygon.outer.size(); ++i)
+      along_edge += sides[i] == 0 && sides[(i + 1) % polygon.outer.size()] == 0;
+  }
+  // The draws reach the cases the shortcut is for.
+  EXPECT_GT(on_boundary, 10000);
+  EXPECT_GT(along_edge, 1500);
 }
 
 }  // namespace

@@ -30,6 +30,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <unordered_map>
 
 namespace hlr::hidden_line {
@@ -100,7 +101,7 @@ struct PlainParams {
   const ImageLine<K>& line;
   EdgeLine edge_line;
   bool on_line(const clip::Contour<K>&, std::size_t) const { return false; }
-  FT corner(const clip::Contour<K>& c, std::size_t i, const std::vector<int>&) { return line.param(c.points[i]); }
+  FT corner(const clip::Contour<K>& c, std::size_t i, std::span<const int>) { return line.param(c.points[i]); }
   FT crossing(const clip::Contour<K>& c, std::size_t i) {
     const auto [c0, c1] = edge_line(c, i);
     return line.param_of_crossing(c0, c1);
@@ -127,10 +128,12 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
     const int hi = line.along_x ? G::compare_x(p, line.b) : G::compare_y(p, line.b);
     return lo != 0 && lo == hi;
   };
-  std::vector<int> side;
+  // The side of the line each corner lies on, contour after contour (the outer one first).
+  std::vector<int> sides;
   auto scan = [&](const clip::Contour<K>& c) {
     const std::size_t n = c.size();
-    side.resize(n);
+    sides.resize(sides.size() + n);
+    const std::span<int> side(sides.end() - std::ptrdiff_t(n), sides.end());
     for (std::size_t i = 0; i < n; ++i) side[i] = params.on_line(c, i) ? 0 : G::orientation(line.a, line.b, c.points[i]);
     for (std::size_t i = 0; i < n; ++i) {
       const int op = side[i], oq = side[(i + 1) % n];
@@ -153,13 +156,13 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   auto end_side = [&](std::size_t i) {
     if (!unit) return 0;
     int side = 0;
-    if (i == 0) side = clip::side_of_polygon(polygon, line.a);
-    if (side == 0 && i + 2 == ts.size()) side = clip::side_of_polygon(polygon, line.b);
+    if (i == 0) side = clip::side_of_polygon_on_line(polygon, sides, line.a);
+    if (side == 0 && i + 2 == ts.size()) side = clip::side_of_polygon_on_line(polygon, sides, line.b);
     return side;
   };
   for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
     int side = end_side(i);
-    if (side == 0) side = clip::side_of_polygon(polygon, line.at((ts[i] + ts[i + 1]) / 2));
+    if (side == 0) side = clip::side_of_polygon_on_line(polygon, sides, line.at((ts[i] + ts[i + 1]) / 2));
     if (closed ? side < 0 : side <= 0) continue;
     if (!out.empty() && out.back().second == ts[i]) out.back().second = ts[i + 1];
     else out.emplace_back(ts[i], ts[i + 1]);
@@ -307,11 +310,16 @@ class Classifier {
     // that edge's support line crosses the line (rule 3: the corner lies on it).
     // One corner shared by several fragments (a mesh vertex on the line) is reached by different
     // edges in each, so it is also looked up by identity.
-    FT corner(const clip::Contour<K>& c, std::size_t i, const std::vector<int>& side) {
+    FT corner(const clip::Contour<K>& c, std::size_t i, std::span<const int> side) {
       if constexpr (!G::exact_constructions) return line->param(c.points[i]);  // rounded points: as they are
       const std::uintptr_t id = G::identity(c.points[i]);
-      if (id != 0)
+      if (id != 0) {
+        // The line's own ends (a corner the line starts from): 0 and 1 exactly, not a crossing
+        // that equals them and would be compared with them exactly.
+        if (id == G::identity(line->a)) return FT(0);
+        if (id == G::identity(line->b)) return FT(1);
         if (auto it = by_point.find(id); it != by_point.end()) return it->second;
+      }
       const std::size_t n = c.size(), prev = i == 0 ? n - 1 : i - 1, next = i + 1 == n ? 0 : i + 1;
       const FT t = side[prev] != 0 ? crossing_of(c.lines[prev])
                    : side[next] != 0 ? crossing_of(c.lines[i])

@@ -2,10 +2,10 @@
 #include <hlr/kernel/features.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 
 #include <unordered_map>
 
@@ -17,12 +17,11 @@
 namespace hlr {
 namespace {
 
-using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-
 // A face's normal, oriented by its corner order: twice its vector area, the sum of the fan
 // triangles' cross products from the first corner. Right for any planar simple polygon, convex or
 // not (three corners alone give the wrong side at a reflex corner). Over NT: intervals (under
-// CGAL::Protect_FPU_rounding) to filter, EK::FT to decide what they cannot.
+// CGAL::Protect_FPU_rounding) to filter, CGAL::Mpzf (exact sums and products of doubles) to
+// decide what they cannot.
 template <class NT>
 std::array<NT, 3> face_normal(const Mesh& mesh, const std::vector<std::uint32_t>& face) {
   using V = std::array<NT, 3>;
@@ -43,7 +42,7 @@ NT dot(const std::array<NT, 3>& a, const std::array<NT, 3>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// n1·n2 < c |n1| |n2|, squared with the signs taken care of: exact over EK::FT, possibly
+// n1·n2 < c |n1| |n2|, squared with the signs taken care of: exact over CGAL::Mpzf, possibly
 // uncertain over intervals.
 template <class NT>
 auto angle_above(const std::array<NT, 3>& n1, const std::array<NT, 3>& n2, double cos_threshold) {
@@ -59,7 +58,9 @@ auto angle_above(const std::array<NT, 3>& n1, const std::array<NT, 3>& n2, doubl
 class FaceNormals {
  public:
   using IA = CGAL::Interval_nt<false>;
-  using FT = EK::FT;
+  // Not a lazy number: edge-on faces and right-angled creases leave many faces to the exact
+  // stage, and a lazy number's first exact evaluation costs a std::call_once per node.
+  using FT = CGAL::Mpzf;
 
   // Facing: the sign of n·t with t toward the viewer: −d in an orthographic view; in a
   // perspective one e − p for a corner p, so that the face faces the viewer exactly when the eye

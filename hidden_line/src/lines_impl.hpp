@@ -49,6 +49,10 @@ struct ImageLine {
 
   ImageLine(const P& pa, const P& pb)
       : a(pa), b(pb), dx(G::x(pb) - G::x(pa)), dy(G::y(pb) - G::y(pa)), along_x(G::compare_x(pa, pb) != 0) {}
+  // From the view points the image points were made of: their coordinates as they are, without a
+  // lazy node to take each back out of its point.
+  ImageLine(const P& pa, const P& pb, const ViewPoint<K>& va, const ViewPoint<K>& vb)
+      : a(pa), b(pb), dx(vb.x - va.x), dy(vb.y - va.y), along_x(G::compare_x(pa, pb) != 0) {}
 
   // The parameter of a point on the line.
   FT param(const P& q) const { return parameter_along<K>(a, q, along_x ? dx : dy, along_x); }
@@ -364,7 +368,7 @@ class Classifier {
     const ViewPoint<K>&a = q.a, &b = q.b;
     const P &pa = q.pa, &pb = q.pb;
     if (G::equal(pa, pb)) return {};
-    const ImageLine<K> line(pa, pb);
+    const ImageLine<K> line(pa, pb, a, b);
     auto& occluders_ = scratch.occluders;
     occluders_.clear();
     auto& params = scratch.params;
@@ -675,7 +679,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   std::vector<detail::ImageLine<K>> images;
   images.reserve(lines.lines.size());
   std::vector<Span> spans;
-  for (const auto& l : lines.lines) images.emplace_back(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y));
+  for (const auto& l : lines.lines) images.emplace_back(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y), l.a, l.b);
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
   // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
   for (int pass = 0; pass < 3; ++pass)

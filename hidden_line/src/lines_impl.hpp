@@ -679,7 +679,23 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   std::vector<detail::ImageLine<K>> images;
   images.reserve(lines.lines.size());
   std::vector<Span> spans;
-  for (const auto& l : lines.lines) images.emplace_back(G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y), l.a, l.b);
+  // One image point per mesh vertex: collinear lines that meet at a vertex then meet at one point
+  // (G::identity), and the spans' overlaps there need no exact comparison (param_on below).
+  std::vector<std::uint32_t> vertex_count;
+  for (const auto& l : lines.lines)
+    if (l.has_model_ends) {
+      if (vertex_count.size() <= l.mesh) vertex_count.resize(l.mesh + 1, 0);
+      vertex_count[l.mesh] = std::max({vertex_count[l.mesh], l.v0 + 1, l.v1 + 1});
+    }
+  std::vector<std::vector<std::optional<typename G::Point>>> vertex_points(vertex_count.size());
+  for (std::size_t m = 0; m < vertex_count.size(); ++m) vertex_points[m].resize(vertex_count[m]);
+  auto image_point = [&](const FeatureLine<K>& l, const ViewPoint<K>& p, std::uint32_t v) {
+    if (!l.has_model_ends) return G::point(p.x, p.y);
+    std::optional<typename G::Point>& shared = vertex_points[l.mesh][v];
+    if (!shared) shared = G::point(p.x, p.y);
+    return *shared;
+  };
+  for (const auto& l : lines.lines) images.emplace_back(image_point(l, l.a, l.v0), image_point(l, l.b, l.v1), l.a, l.b);
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
   // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
   for (int pass = 0; pass < 3; ++pass)

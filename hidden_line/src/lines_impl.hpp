@@ -54,8 +54,19 @@ struct ImageLine {
   ImageLine(const P& pa, const P& pb, const ViewPoint<K>& va, const ViewPoint<K>& vb)
       : a(pa), b(pb), dx(vb.x - va.x), dy(vb.y - va.y), along_x(G::compare_x(pa, pb) != 0) {}
 
-  // The parameter of a point on the line.
-  FT param(const P& q) const { return parameter_along<K>(a, q, along_x ? dx : dy, along_x); }
+  // The parameter of a point on the line; the line's own ends (by identity, on the exact kernel)
+  // are 0 and 1 exactly, not quotients equal to them that comparisons would evaluate exactly.
+  std::optional<FT> end_param(const P& q) const {
+    if (const std::uintptr_t id = G::identity(q); id != 0) {
+      if (id == G::identity(a)) return FT(0);
+      if (id == G::identity(b)) return FT(1);
+    }
+    return std::nullopt;
+  }
+  FT param(const P& q) const {
+    if (auto t = end_param(q)) return *t;
+    return parameter_along<K>(a, q, along_x ? dx : dy, along_x);
+  }
   // The parameter where the line meets the line through c and d (not parallel to it).
   FT param_of_crossing(const P& c, const P& d) const { return crossing_parameter<K>(a, dx, dy, c, d); }
   // On the exact kernel the line's own ends for t exactly 0 or 1, rather than constructions equal
@@ -318,13 +329,10 @@ class Classifier {
     FT corner(const clip::Contour<K>& c, std::size_t i, std::span<const int> side) {
       if constexpr (!G::exact_constructions) return line->param(c.points[i]);  // rounded points: as they are
       const std::uintptr_t id = G::identity(c.points[i]);
-      if (id != 0) {
-        // The line's own ends (a corner the line starts from): 0 and 1 exactly, not a crossing
-        // that equals them and would be compared with them exactly.
-        if (id == G::identity(line->a)) return FT(0);
-        if (id == G::identity(line->b)) return FT(1);
+      // The line's own end (a corner it starts from) is 0 or 1, not a crossing equal to it.
+      if (auto t = line->end_param(c.points[i])) return *t;
+      if (id != 0)
         if (auto it = by_point.find(id); it != by_point.end()) return it->second;
-      }
       const std::size_t n = c.size(), prev = i == 0 ? n - 1 : i - 1, next = i + 1 == n ? 0 : i + 1;
       const FT t = side[prev] != 0 ? crossing_of(c.lines[prev])
                    : side[next] != 0 ? crossing_of(c.lines[i])
@@ -334,9 +342,8 @@ class Classifier {
     }
     // The parameter of any point on the line: the line's own ends are 0 and 1 exactly.
     FT at_point(const P& p) {
+      if (auto t = line->end_param(p)) return *t;
       if (G::identity(p) != 0) {
-        if (G::identity(p) == G::identity(line->a)) return FT(0);
-        if (G::identity(p) == G::identity(line->b)) return FT(1);
         auto [it, added] = by_point.try_emplace(G::identity(p));
         if (added) it->second = line->param(p);
         return it->second;
@@ -393,15 +400,14 @@ class Classifier {
         if (!model_planes_.empty()) {
           const ModelPlane& plane = model_planes_[source];
           Depth<K>& d = it->second;
-          if (q.model_a) {
-            d.sign0 = in_plane(q.v0, std::int32_t(source)) ? 0 : plane.nearer_than(*q.model_a);
-            d.sign1 = in_plane(q.v1, std::int32_t(source)) ? 0 : plane.nearer_than(*q.model_b);
-            if (d.crosses()) d.t0 = plane.crossing(*q.model_a, *q.model_b);
-          } else {
-            d.sign0 = plane.nearer_than(*q.exact_a);
-            d.sign1 = plane.nearer_than(*q.exact_b);
-            if (d.crosses()) d.t0 = plane.crossing(*q.exact_a, *q.exact_b);
-          }
+          // The ends as input vertices or as exact points (a constructed line has no vertex).
+          auto against = [&](const auto& pa, const auto& pb) {
+            d.sign0 = in_plane(q.v0, std::int32_t(source)) ? 0 : plane.nearer_than(pa);
+            d.sign1 = in_plane(q.v1, std::int32_t(source)) ? 0 : plane.nearer_than(pb);
+            if (d.crosses()) d.t0 = plane.crossing(pa, pb);
+          };
+          if (q.model_a) against(*q.model_a, *q.model_b);
+          else against(*q.exact_a, *q.exact_b);
           return d;
         }
       const DepthPlane<K>& plane = *sources_.polygons[source].plane;
@@ -680,7 +686,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   images.reserve(lines.lines.size());
   std::vector<Span> spans;
   // One image point per mesh vertex: collinear lines that meet at a vertex then meet at one point
-  // (G::identity), and the spans' overlaps there need no exact comparison (param_on below).
+  // (G::identity), and the spans' overlaps there need no exact comparison (ImageLine::param).
   std::vector<std::uint32_t> vertex_count;
   for (const auto& l : lines.lines)
     if (l.has_model_ends) {
@@ -824,16 +830,6 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     group_spans[std::size_t(g)].push_back(s);
   }
 
-  // The parameter of a point on a line; the line's own ends (a mesh vertex that collinear lines
-  // share) are 0 and 1 without arithmetic, not quotients equal to them that comparisons with the
-  // spans' ends would evaluate exactly.
-  auto param_on = [](const detail::ImageLine<K>& image, const typename G::Point& p) -> FT {
-    if (const std::uintptr_t id = G::identity(p); id != 0) {
-      if (id == G::identity(image.a)) return FT(0);
-      if (id == G::identity(image.b)) return FT(1);
-    }
-    return image.param(p);
-  };
   // One group's spans in order: what each adds to the drawing, with its span index. A span of a
   // line alone in its group is drawn whole.
   auto solve_group = [&](const std::vector<std::uint32_t>& members,
@@ -865,7 +861,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
         // in floating point): each pair is asked again.
         if constexpr (!G::exact_constructions)
           if (!collinear_lines(span.line, drawn_line[i])) return;
-        FT lo = param_on(image, out[i].a), hi = param_on(image, out[i].b);
+        FT lo = image.param(out[i].a), hi = image.param(out[i].b);
         if (hi < lo) std::swap(lo, hi);
         lo = std::max(lo, span.t0);
         hi = std::min(hi, span.t1);

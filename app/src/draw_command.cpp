@@ -107,10 +107,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
     sheet.merged = exporter::sheet_segments(drawing, style);
   }
   const std::size_t merged = sheet.merged.merged;
-  drawing.merged_segments = merged;
-  drawing.merge_distance_mm = style.merge_distance;
-  drawing.contact_segments = sheet.merged.contact;
-  drawing.contact_degrees = style.contact_degrees;
+  exporter::record_sheet_counts(drawing, sheet.merged, style);
   run.stage("writing " + std::to_string(files.size()) + (files.size() == 1 ? " output" : " outputs"));
   for (const bool json : {false, true}) {
     for (std::size_t i = 0; i < files.size(); ++i) {

@@ -232,10 +232,7 @@ int run(const FramesCommandOptions& options) {
     exporter::MergedSegments merged =
         on_sheet ? sheets[i].merged : exporter::sheet_segments(drawing, *style);
     if (on_sheet) drawing.curves = exporter::LineDrawing::CurveCounts{sheets[i].curves.circles.size(), sheets[i].curves.arcs};
-    drawing.merged_segments = merged.merged;
-    drawing.merge_distance_mm = style->merge_distance;
-    drawing.contact_segments = merged.contact;
-    drawing.contact_degrees = style->contact_degrees;
+    exporter::record_sheet_counts(drawing, merged, *style);
     for (std::size_t j = 0; j < patterns.size(); ++j) {
       AtomicFile& file = files[i * patterns.size() + j];
       switch (formats[j]) {

@@ -48,11 +48,7 @@ int main(int argc, char** argv) {
     drawing.times.total += read;
     const auto write_start = std::chrono::steady_clock::now();
     const hlr::exporter::DrawingStyle style;
-    const auto merged = hlr::exporter::sheet_segments(drawing, style);
-    drawing.merged_segments = merged.merged;
-    drawing.merge_distance_mm = style.merge_distance;
-    drawing.contact_segments = merged.contact;
-    drawing.contact_degrees = style.contact_degrees;
+    hlr::exporter::record_sheet_counts(drawing, hlr::exporter::sheet_segments(drawing, style), style);
     std::string document;
     hlr::exporter::write_lines_json(drawing, [&](std::string_view text) { document += text; },
                                     [&] { return drawing.times.write + since(write_start); });

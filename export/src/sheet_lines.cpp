@@ -130,6 +130,13 @@ MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& st
   return sheet_segments_at(drawing, style, drawing_scale(drawing, style));
 }
 
+void record_sheet_counts(LineDrawing& drawing, const MergedSegments& merged, const DrawingStyle& style) {
+  drawing.merged_segments = merged.merged;
+  drawing.merge_distance_mm = style.merge_distance;
+  drawing.contact_segments = merged.contact;
+  drawing.contact_degrees = style.contact_degrees;
+}
+
 SheetLines sheet_lines_at(const LineDrawing& drawing, const DrawingStyle& style, double scale) {
   SheetLines sheet;
   sheet.scale = scale;

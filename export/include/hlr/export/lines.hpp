@@ -222,6 +222,9 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
 // style.hidden) without the contact lines (style.contact_degrees), merged at style.merge_distance
 // mm on the sheet, that is merge_distance / scale in model units at the drawing's scale.
 MergedSegments sheet_segments(const LineDrawing& drawing, const DrawingStyle& style);
+// Sets the drawing's sheet counts (merged_segments, merge_distance_mm, contact_segments,
+// contact_degrees) from what sheet_segments made of it with `style`.
+void record_sheet_counts(LineDrawing& drawing, const MergedSegments& merged, const DrawingStyle& style);
 
 // The name of each part (mesh) of a drawing, from its name in the source where it has one
 // (InputInfo::parts: a STEP product), else from its input file's stem: letters, digits, '_' and

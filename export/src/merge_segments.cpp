@@ -15,6 +15,7 @@
 #include <hlr/export/lines.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <set>
@@ -31,11 +32,42 @@ double cross(const Point2& u, const Point2& v) { return u[0] * v[1] - u[1] * v[0
 double dot(const Point2& u, const Point2& v) { return u[0] * v[0] + u[1] * v[1]; }
 Point2 minus(const Point2& a, const Point2& b) { return {a[0] - b[0], a[1] - b[1]}; }
 
-double distance_to_segment(const Point2& x, const Point2& a, const Point2& b) {
+double squared_distance_to_segment(const Point2& x, const Point2& a, const Point2& b) {
   const Point2 ab = minus(b, a), ax = minus(x, a);
   const double len2 = dot(ab, ab);
   const double t = len2 > 0 ? std::clamp(dot(ax, ab) / len2, 0.0, 1.0) : 0.0;
-  return std::hypot(ax[0] - t * ab[0], ax[1] - t * ab[1]);
+  const Point2 off{ax[0] - t * ab[0], ax[1] - t * ab[1]};
+  return dot(off, off);
+}
+
+// A segment's length and unit direction, worked out once per segment rather than per candidate
+// pair (a dense drawing compares each segment with dozens of neighbours).
+struct Direction {
+  double length;
+  Point2 unit;
+};
+
+Direction direction_of(const DrawingSegment& s) {
+  const Point2 ab = minus(s.b, s.a);
+  const double len = std::hypot(ab[0], ab[1]);
+  return {len, {ab[0] / len, ab[1] / len}};
+}
+
+// The drawing's extent and mean segment length, which size the grids.
+struct Extent {
+  double x0 = 0, y0 = 0, w = 1, h = 1, mean_length = 1;
+};
+
+Extent extent_of(const std::vector<DrawingSegment>& segments, double widen) {
+  double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL, total = 0;
+  for (const auto& s : segments) {
+    for (const Point2& p : {s.a, s.b})
+      x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+    total += std::hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]);
+  }
+  if (!(x0 <= x1 && y0 <= y1)) x0 = y0 = 0, x1 = y1 = 1;
+  const double n = double(segments.size());
+  return {x0 - widen, y0 - widen, x1 - x0 + 2 * widen, y1 - y0 + 2 * widen, n > 0 ? total / n : 1.0};
 }
 
 // Segment ids in a uniform grid of square cells; a segment is listed in every cell within
@@ -44,19 +76,12 @@ double distance_to_segment(const Point2& x, const Point2& a, const Point2& b) {
 // millions of cells).
 class SegmentGrid {
  public:
-  SegmentGrid(const std::vector<DrawingSegment>& segments, double widen) : widen_(widen) {
-    double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL, total = 0;
-    std::size_t n = 0;
-    for (const auto& s : segments)
-      for (const Point2& p : {s.a, s.b}) {
-        x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
-      }
-    for (const auto& s : segments) total += std::hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]), ++n;
-    if (!(x0 <= x1 && y0 <= y1)) x0 = y0 = 0, x1 = y1 = 1;
-    x0_ = x0 - widen, y0_ = y0 - widen;
-    const double w = x1 - x0 + 2 * widen, h = y1 - y0 + 2 * widen;
+  // Sized for about n segments.
+  SegmentGrid(const Extent& extent, std::size_t n, double widen)
+      : widen_(widen), x0_(extent.x0), y0_(extent.y0) {
+    const double w = extent.w, h = extent.h;
     // About one mean segment length per cell, at most 2048 cells a side and about 4 cells a segment.
-    double cell = std::max({n ? total / double(n) : 1.0, 2 * widen, std::max(w, h) / 2048});
+    double cell = std::max({extent.mean_length, 2 * widen, std::max(w, h) / 2048});
     cell = std::max(cell, std::sqrt(w * h / (4.0 * double(n) + 16)));
     if (!(cell > 0) || !std::isfinite(cell)) cell = std::max({w, h, 1.0});
     cell_ = cell;
@@ -64,7 +89,7 @@ class SegmentGrid {
     ny_ = std::clamp<long>(long(h / cell) + 1, 1, 4096);
     first_.assign(std::size_t(nx_ * ny_), none);
     last_.assign(std::size_t(nx_ * ny_), none);
-    entries_.reserve(4 * segments.size());
+    entries_.reserve(4 * n);
   }
 
   void insert(std::uint32_t id, const DrawingSegment& s) {
@@ -75,20 +100,13 @@ class SegmentGrid {
       else entries_[last_[cell]].next = entry;
       last_[cell] = entry;
     });
-    if (id >= stamp_.size()) stamp_.resize(id + 1, 0);
   }
 
-  // Calls visit(id) once for every listed segment that shares a cell with `s`.
+  // Calls visit(id) for every listed segment that shares a cell with `s`, once per cell.
   template <class Visit>
   void query(const DrawingSegment& s, Visit&& visit) {
-    ++round_;
     for_cells(s, [&](std::size_t cell) {
-      for (std::uint32_t e = first_[cell]; e != none; e = entries_[e].next) {
-        const std::uint32_t id = entries_[e].id;
-        if (stamp_[id] == round_) continue;
-        stamp_[id] = round_;
-        visit(id);
-      }
+      for (std::uint32_t e = first_[cell]; e != none; e = entries_[e].next) visit(entries_[e].id);
     });
   }
 
@@ -109,11 +127,13 @@ class SegmentGrid {
     const long cy0 = index(std::min(s.a[1], s.b[1]) - widen_, y0_, ny_);
     const long cy1 = index(std::max(s.a[1], s.b[1]) + widen_, y0_, ny_);
     const bool one_cell = cx0 == cx1 || cy0 == cy1;  // a row or column: every cell is near
-    const double reach = cell_ * M_SQRT1_2 + widen_ + cell_ * 1e-9;
+    // A cell whose centre is farther than this holds no point within widen_ of s; the margin
+    // keeps rounding on the safe side.
+    const double reach = cell_ * M_SQRT1_2 + widen_ + cell_ * 1e-9, reach2 = reach * reach;
     for (long y = cy0; y <= cy1; ++y)
       for (long x = cx0; x <= cx1; ++x) {
         const Point2 centre{x0_ + (double(x) + 0.5) * cell_, y0_ + (double(y) + 0.5) * cell_};
-        if (one_cell || distance_to_segment(centre, s.a, s.b) <= reach) each(std::size_t(y * nx_ + x));
+        if (one_cell || squared_distance_to_segment(centre, s.a, s.b) <= reach2) each(std::size_t(y * nx_ + x));
       }
   }
 
@@ -121,23 +141,69 @@ class SegmentGrid {
   long nx_ = 1, ny_ = 1;
   std::vector<std::uint32_t> first_, last_;  // per cell: its first and last entry, or none
   std::vector<Entry> entries_;
+};
+
+// Only nearly parallel segments cover each other, so segments are filed by direction: one grid
+// per range of angles (modulo a half turn), and a query looks in its own range and the two beside
+// it. A range (pi/16) is far wider than the angle a cover allows (max_sine), so no cover is missed;
+// in a dense drawing this leaves about 3/16 of the neighbours to test.
+class DirectionalGrid {
+ public:
+  static constexpr int ranges = 16;
+
+  DirectionalGrid(const std::vector<DrawingSegment>& segments, double widen) {
+    const Extent extent = extent_of(segments, widen);
+    std::array<std::size_t, ranges> count{};
+    for (const auto& s : segments) ++count[range_of(direction_of(s))];
+    for (int r = 0; r < ranges; ++r) grids_.emplace_back(extent, count[r], widen);
+  }
+
+  void insert(std::uint32_t id, const DrawingSegment& s, const Direction& d) {
+    grids_[range_of(d)].insert(id, s);
+    if (id >= stamp_.size()) stamp_.resize(id + 1, 0);
+  }
+
+  // Calls visit(id) once for every segment filed near `s` in a range beside its own.
+  template <class Visit>
+  void query(const DrawingSegment& s, const Direction& d, Visit&& visit) {
+    ++round_;
+    const int r = range_of(d);
+    for (const int q : {(r + ranges - 1) % ranges, r, (r + 1) % ranges})
+      grids_[q].query(s, [&](std::uint32_t id) {
+        if (stamp_[id] == round_) return;
+        stamp_[id] = round_;
+        visit(id);
+      });
+  }
+
+ private:
+  static int range_of(const Direction& d) {
+    double angle = std::atan2(d.unit[1], d.unit[0]);  // (-pi, pi]; NaN for a point
+    if (angle < 0) angle += M_PI;
+    const double r = std::floor(angle * (ranges / M_PI));
+    return r >= 0 && r < ranges ? int(r) : 0;
+  }
+
+  std::vector<SegmentGrid> grids_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t round_ = 0;
 };
+
 
 // A covered stretch [lo, hi] of S (arc length from S's start); an end that lies at an end of the
 // covering segment carries that end, which the cut piece ends on.
 struct Cover {
   double lo, hi;
   std::optional<Point2> at_lo, at_hi;
+  std::uint32_t by = 0;  // the kept segment that covers: orders equal stretches whatever the visit order
 };
 
-// The part of s = (a, b) that runs along k within `distance`, if any.
-std::optional<Cover> cover_of(const DrawingSegment& s, const DrawingSegment& k, double distance) {
-  const Point2 ab = minus(s.b, s.a), pq = minus(k.b, k.a);
-  const double len = std::hypot(ab[0], ab[1]), len_k = std::hypot(pq[0], pq[1]);
+// The part of s that runs along k within `distance`, if any.
+std::optional<Cover> cover_of(const DrawingSegment& s, const Direction& ds, const DrawingSegment& k,
+                              const Direction& dk, double distance) {
+  const double len = ds.length, len_k = dk.length;
   if (!(len > 0) || !(len_k > 0)) return std::nullopt;
-  const Point2 u{ab[0] / len, ab[1] / len}, v{pq[0] / len_k, pq[1] / len_k};
+  const Point2 &u = ds.unit, &v = dk.unit;
   if (std::abs(cross(u, v)) > max_sine) return std::nullopt;
   // Foot on k: w(s) = w0 + s cos in [0, len_k]; |cos| is nearly 1 here.
   const Point2 pa = minus(s.a, k.a);
@@ -180,9 +246,11 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     for (std::uint32_t i = 0; i < segments.size(); ++i)
       if (precedence_rank(segments[i]) == rank) order.push_back(i);
 
-  SegmentGrid grid(segments, distance);
+  DirectionalGrid grid(segments, distance);
   std::vector<DrawingSegment> kept;
+  std::vector<Direction> kept_directions;
   kept.reserve(segments.size());
+  kept_directions.reserve(segments.size());
   // The pieces kept of segment i are kept[pieces_of[i].first, pieces_of[i].second): a segment's
   // pieces are kept one after the other, while it is the one being merged.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces_of(segments.size());
@@ -191,20 +259,23 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     const DrawingSegment& s = segments[i];
     pieces_of[i] = {std::uint32_t(kept.size()), std::uint32_t(kept.size())};
     covers.clear();
-    grid.query(s, [&](std::uint32_t k) {
-      if (auto c = cover_of(s, kept[k], distance)) covers.push_back(*c);
+    const Direction ds = direction_of(s);
+    grid.query(s, ds, [&](std::uint32_t k) {
+      if (auto c = cover_of(s, ds, kept[k], kept_directions[k], distance)) c->by = k, covers.push_back(*c);
     });
     auto keep = [&](const DrawingSegment& piece) {
-      grid.insert(std::uint32_t(kept.size()), piece);
+      const Direction d = direction_of(piece);
+      grid.insert(std::uint32_t(kept.size()), piece, d);
       kept.push_back(piece);
+      kept_directions.push_back(d);
       pieces_of[i].second = std::uint32_t(kept.size());
     };
     // Covers joined into runs where the gap between them is below the distance (such a gap is a
     // sliver of the same line). A run shorter than the distance is no overlap but two lines
     // meeting end to end (the neighbours along a tessellated curve), unless it is all of s.
-    const double len = std::hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]);
+    const double len = ds.length;
     std::sort(covers.begin(), covers.end(), [](const Cover& x, const Cover& y) {
-      return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi;
+      return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.by < y.by;
     });
     runs.clear();
     for (const Cover& c : covers) {

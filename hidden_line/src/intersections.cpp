@@ -14,6 +14,7 @@
 
 #include <hlr/hidden_line/lines.hpp>
 #include <hlr/kernel/filtered_sign.hpp>
+#include <hlr/kernel/plane_side.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
@@ -86,6 +87,30 @@ bool straddles(const Mesh& mesh_g, const std::vector<std::uint32_t>& g, const st
     const auto o = CGAL::orientation(a, b, c, input_point<IK>(mesh_g, v));
     below |= o == CGAL::NEGATIVE;
     above |= o == CGAL::POSITIVE;
+  }
+  return below && above;
+}
+
+// What the pair test reads of a face, in one record: the pair search visits faces in the order of
+// their boxes, far from the meshes' order, and a record is two cache lines where the meshes'
+// arrays (faces, vertices, coplanar groups) are about a dozen.
+struct FaceRecord {
+  std::array<Vec3, 3> corner;  // a triangle's corners in order; another face's plane_vertices
+  std::array<std::uint32_t, 3> vertex;
+  std::uint32_t mesh, group;
+  bool triangle;
+};
+
+// Whether triangle g has corners strictly on both sides of the plane `f` of triangle f; corners
+// g shares with f (same mesh, same vertex) lie in that plane and are skipped.
+bool straddles(const PlaneSide& f_plane, const FaceRecord& g, const FaceRecord& f) {
+  const bool same_mesh = f.mesh == g.mesh;
+  bool below = false, above = false;
+  for (int k = 0; k < 3; ++k) {
+    if (same_mesh && (g.vertex[k] == f.vertex[0] || g.vertex[k] == f.vertex[1] || g.vertex[k] == f.vertex[2])) continue;
+    const int o = f_plane(g.corner[k]);
+    below |= o < 0;
+    above |= o > 0;
   }
   return below && above;
 }
@@ -167,9 +192,9 @@ class TriangleChords {
                            std::uint64_t plane_id) {
     const Mesh& m = meshes_[mesh];
     const auto& t = m.faces[face];
+    const PlaneSide plane(a, b, c);
     int side[3];
-    for (int k = 0; k < 3; ++k)
-      side[k] = CGAL::orientation(ip(a), ip(b), ip(c), ip(m.vertices[t[k]]));
+    for (int k = 0; k < 3; ++k) side[k] = plane(m.vertices[t[k]]);
     std::array<End, 2> out;
     int n = 0;
     for (int k = 0; k < 3 && n < 2; ++k) {
@@ -187,7 +212,6 @@ class TriangleChords {
   }
 
  private:
-  static IK::Point_3 ip(const Vec3& p) { return IK::Point_3(p[0], p[1], p[2]); }
   // u + t (w - u) with t = s_u / (s_u - s_w) is (s_u w - s_w u) / (s_u - s_w), s the volumes
   // against the plane (plane_volume, in Mpzf: no gcd): one rational division per coordinate.
   EK::Point_3 crossing(std::uint32_t mesh, std::uint32_t u, std::uint32_t w, const Vec3& a, const Vec3& b,
@@ -232,44 +256,58 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     }
   }
 
-  auto ipoint = [&](const FaceRef& r, int k) {
-    return input_point<IK>(meshes[r.mesh], topo[r.mesh].plane_vertices[r.face][k]);
-  };
-  auto crosses = [&](const FaceRef& f, const FaceRef& g) {
+  std::vector<FaceRecord> records(faces.size());
+  parallel_chunks(faces.size(), 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const FaceRef r = faces[i];
+      const Mesh& m = meshes[r.mesh];
+      const auto& corners = m.faces[r.face];
+      FaceRecord& rec = records[i];
+      rec.triangle = corners.size() == 3;
+      rec.vertex = rec.triangle ? std::array{corners[0], corners[1], corners[2]} : topo[r.mesh].plane_vertices[r.face];
+      for (int k = 0; k < 3; ++k) rec.corner[k] = m.vertices[rec.vertex[k]];
+      rec.mesh = r.mesh;
+      rec.group = topo[r.mesh].coplanar_group[r.face];
+    }
+  });
+  auto ipoint = [&](const FaceRecord& r, int k) { return IK::Point_3(r.corner[k][0], r.corner[k][1], r.corner[k][2]); };
+  // Faces with more corners than three: all their corners against the other's plane.
+  auto polygons_cross = [&](const FaceRef& f, const FaceRef& g, const FaceRecord& rf, const FaceRecord& rg) {
     const auto& fc = meshes[f.mesh].faces[f.face];
     const auto& gc = meshes[g.mesh].faces[g.face];
     const bool same_mesh = f.mesh == g.mesh;
+    return straddles(meshes[g.mesh], gc, same_mesh ? &fc : nullptr, ipoint(rf, 0), ipoint(rf, 1), ipoint(rf, 2)) &&
+           straddles(meshes[f.mesh], fc, same_mesh ? &gc : nullptr, ipoint(rg, 0), ipoint(rg, 1), ipoint(rg, 2));
+  };
+  auto crosses = [&](std::size_t i, std::size_t j) {
+    const FaceRecord &f = records[i], &g = records[j];
+    const bool same_mesh = f.mesh == g.mesh;
     // Faces of one coplanar group never cross, and their corners would all be exact zeros.
-    if (same_mesh && topo[f.mesh].coplanar_group[f.face] == topo[g.mesh].coplanar_group[g.face]) return false;
+    if (same_mesh && f.group == g.group) return false;
+    if (!f.triangle || !g.triangle) return polygons_cross(faces[i], faces[j], f, g);
+    const auto &fc = f.vertex, &gc = g.vertex;
     // Triangles with an edge in common meet in that edge only, whatever their planes: a quarter of
     // the candidate pairs on a mesh.
-    if (same_mesh && fc.size() == 3 && gc.size() == 3 &&
+    if (same_mesh &&
         (fc[0] == gc[0] || fc[0] == gc[1] || fc[0] == gc[2]) + (fc[1] == gc[0] || fc[1] == gc[1] || fc[1] == gc[2]) +
                 (fc[2] == gc[0] || fc[2] == gc[1] || fc[2] == gc[2]) >= 2)
       return false;
-    if (!straddles(meshes[g.mesh], gc, same_mesh ? &fc : nullptr, ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)) ||
-        !straddles(meshes[f.mesh], fc, same_mesh ? &gc : nullptr, ipoint(g, 0), ipoint(g, 1), ipoint(g, 2)))
+    if (!straddles(PlaneSide(f.corner[0], f.corner[1], f.corner[2]), g, f) ||
+        !straddles(PlaneSide(g.corner[0], g.corner[1], g.corner[2]), f, g))
       return false;
-    // Two triangles: the exact overlap test (predicates on the input points only) spares the
-    // constructions for the many curved-surface neighbours that straddle each other's planes but
-    // do not meet.
-    if (fc.size() == 3 && gc.size() == 3) {
-      if (same_mesh) {
-        // Neighbours around a corner straddle each other's planes all over curved surfaces; they
-        // cross only if the two rays of their intersection line from the shared corner agree.
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j)
-            if (fc[i] == gc[j]) {
-              const Mesh& m = meshes[f.mesh];
-              return crosses_at_shared_corner(m.vertices[fc[i]], m.vertices[fc[(i + 1) % 3]], m.vertices[fc[(i + 2) % 3]],
-                                              m.vertices[gc[(j + 1) % 3]], m.vertices[gc[(j + 2) % 3]]);
-            }
-      }
-      auto corner = [&](const FaceRef& r, int k) { return input_point<IK>(meshes[r.mesh], meshes[r.mesh].faces[r.face][k]); };
-      return CGAL::do_intersect(IK::Triangle_3(corner(f, 0), corner(f, 1), corner(f, 2)),
-                                IK::Triangle_3(corner(g, 0), corner(g, 1), corner(g, 2)));
+    // The exact overlap test (predicates on the input points only) spares the constructions for
+    // the many curved-surface neighbours that straddle each other's planes but do not meet.
+    if (same_mesh) {
+      // Neighbours around a corner straddle each other's planes all over curved surfaces; they
+      // cross only if the two rays of their intersection line from the shared corner agree.
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          if (fc[i] == gc[j])
+            return crosses_at_shared_corner(f.corner[i], f.corner[(i + 1) % 3], f.corner[(i + 2) % 3],
+                                            g.corner[(j + 1) % 3], g.corner[(j + 2) % 3]);
     }
-    return true;
+    return CGAL::do_intersect(IK::Triangle_3(ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)),
+                              IK::Triangle_3(ipoint(g, 0), ipoint(g, 1), ipoint(g, 2)));
   };
   // The candidate pairs that cross, sorted: the callback runs on several threads when more than
   // one is allowed, so each collects its own and the sort makes the order one.
@@ -284,17 +322,51 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     Found& mine = alone ? *alone : found.local();
     stop.check_every(mine.polls, 4096);
     const std::size_t i = std::min(x.info(), y.info()), j = std::max(x.info(), y.info());
-    if (crosses(faces[i], faces[j])) mine.pairs.emplace_back(i, j);
+    if (crosses(i, j)) mine.pairs.emplace_back(i, j);
   };
   // The segment tree scans lists of up to kCutoff boxes directly instead of splitting them further.
   // Mesh faces' boxes overlap their neighbours' in every direction, and CGAL's default of 10
   // spends most of the search on splitting: with 1,000, finding the 538,234 overlapping pairs of
   // refined_elephant takes 0.11 s instead of 0.32 s (docs/BENCHMARKS.md, "Eighth run").
   constexpr std::ptrdiff_t kCutoff = 1000;
-  if (parallel)
-    CGAL::box_self_intersection_d<CGAL::Parallel_tag>(boxes.begin(), boxes.end(), test_boxes, kCutoff);
-  else
+  if (parallel) {
+    // Slabs across the scene's longest axis, searched side by side. CGAL's Parallel_tag runs only
+    // the top of its tree in parallel (asm_1M: 4.3 s on one thread, 3.6 s on two). A box goes into
+    // every slab its extent meets, and a pair belongs to the slab that holds the larger of the two
+    // boxes' lower ends, which both reach: each pair is tested once. Slab bounds are quantiles of
+    // the lower ends, so that slabs hold about as many boxes.
+    int axis = 0;
+    {
+      double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+      for (const Box& b : boxes)
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], b.min_coord(k)), hi[k] = std::max(hi[k], b.max_coord(k));
+      for (int k = 1; k < 3; ++k)
+        if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+    }
+    const auto threads = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+    const std::size_t slab_count = std::min<std::size_t>(4 * threads, boxes.size() / 4096 + 1);
+    std::vector<double> lower_ends(boxes.size());
+    for (std::size_t b = 0; b < boxes.size(); ++b) lower_ends[b] = boxes[b].min_coord(axis);
+    std::sort(lower_ends.begin(), lower_ends.end());
+    std::vector<double> bounds;  // slab s is [bounds[s - 1], bounds[s]), the first and last unbounded
+    for (std::size_t s = 1; s < slab_count; ++s) bounds.push_back(lower_ends[s * lower_ends.size() / slab_count]);
+    auto slab_of = [&](double x) { return std::size_t(std::upper_bound(bounds.begin(), bounds.end(), x) - bounds.begin()); };
+    std::vector<std::vector<Box>> slabs(slab_count);
+    for (const Box& b : boxes)
+      for (std::size_t s = slab_of(b.min_coord(axis)), last = slab_of(b.max_coord(axis)); s <= last; ++s)
+        slabs[s].push_back(b);
+    parallel_chunks(slab_count, 1, [&](const auto& range) {
+      for (std::size_t s = range.begin(); s != range.end(); ++s)
+        CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
+            slabs[s].begin(), slabs[s].end(),
+            [&](const Box& x, const Box& y) {
+              if (slab_of(std::max(x.min_coord(axis), y.min_coord(axis))) == s) test_boxes(x, y);
+            },
+            kCutoff);
+    });
+  } else {
     CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), test_boxes, kCutoff);
+  }
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const Found& f : found) pairs.insert(pairs.end(), f.pairs.begin(), f.pairs.end());
   std::sort(pairs.begin(), pairs.end());

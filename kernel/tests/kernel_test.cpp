@@ -3,6 +3,7 @@
 #include <hlr/kernel/kernel.hpp>
 #include <hlr/kernel/exact_output.hpp>
 #include <hlr/kernel/line_box.hpp>
+#include <hlr/kernel/plane_side.hpp>
 #include <hlr/kernel/view_predicates.hpp>
 
 #include <gtest/gtest.h>
@@ -204,6 +205,43 @@ double hard_value(std::mt19937_64& random, int mode) {
     case 2: return 1e8 + std::round(unit(random) * 4);
     default: return unit(random) < 0 ? unit(random) * 1e-9 : unit(random) * 1e9;
   }
+}
+
+// PlaneSide's static bound: a decided side must be the exact one (the determinant in rationals),
+// for points on the plane (exact zeros), an ulp off it, and ordinary ones, with coordinates random,
+// on a coarse grid, far from the origin and of mixed magnitude; ordinary cases (not exactly on the plane) it must settle itself.
+TEST(ExactKernel, PlaneSideIsTheExactOrientation) {
+  using Q = CGAL::Exact_rational;
+  std::mt19937_64 random(20261205);
+  auto exact_side = [](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+    Q u[3], v[3], w[3];
+    for (int k = 0; k < 3; ++k) u[k] = Q(b[k]) - Q(a[k]), v[k] = Q(c[k]) - Q(a[k]), w[k] = Q(p[k]) - Q(a[k]);
+    const Q det = w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) + w[2] * (u[0] * v[1] - u[1] * v[0]);
+    return static_cast<int>(CGAL::sign(det));
+  };
+  std::size_t zeros = 0, ordinary = 0, ordinary_decided = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const int mode = i % 4;
+    auto point = [&] { return Vec3{hard_value(random, mode), hard_value(random, mode), hard_value(random, mode)}; };
+    const Vec3 a = point(), b = point(), c = point();
+    Vec3 p = point();
+    const int kind = i / 4 % 3;
+    if (kind > 0) {  // on the plane where the sum is exact (the grids), an ulp off it after
+      for (int k = 0; k < 3; ++k) p[k] = b[k] + c[k] - a[k];
+      if (kind == 2) p[i % 3] = std::nextafter(p[i % 3], HUGE_VAL);
+    }
+    const int want = exact_side(a, b, c, p);
+    zeros += want == 0;
+    const PlaneSide side(a, b, c);
+    ASSERT_EQ(side(p), want) << i;
+    const int in_double = side.in_double(p);
+    if (in_double != 2) {
+      ASSERT_EQ(in_double, want) << i;
+    }
+    if (kind == 0 && want != 0) ++ordinary, ordinary_decided += in_double != 2;
+  }
+  EXPECT_GT(zeros, 2000u) << "the draws must hit exact zeros";
+  EXPECT_GT(ordinary_decided, ordinary * 99 / 100) << "the bound must settle ordinary cases";
 }
 
 // The view coordinates of an input point are one lazy number each (view.hpp's RowDotRep): their

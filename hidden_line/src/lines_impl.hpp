@@ -101,6 +101,15 @@ struct Occluder {
   const Depth<K>* depth;
 };
 
+// Empties a per-line lookup without clear()'s zeroing of every bucket, which a map grown once by a
+// line with many covers would repeat for every line after it.
+template <class Map>
+void reset(Map& map) {
+  if (map.empty()) return;
+  if (map.bucket_count() > 64) map = Map();
+  else map.clear();
+}
+
 template <class FT>
 void sort_unique(std::vector<FT>& ts) {
   std::sort(ts.begin(), ts.end());
@@ -124,14 +133,60 @@ struct PlainParams {
   }
 };
 
+// The segment a -> b of `line` against a polygon oriented as the clipper's (its region left of
+// every edge) whose corners all lie strictly off the line (`sides`, contour after contour) and
+// whose boundary the line crosses exactly twice: then the region meets the line in one chord,
+// bounded by the two crossing edges. The segment lies in the region's interior when both its ends
+// lie strictly inside both edges, and misses the region's closure when both lie strictly outside
+// one of them (the chord begins beyond it). Nothing when neither holds, or the line crosses more
+// edges or passes through a corner. Decided on the ends' sides of two edges, without constructing
+// a crossing or locating the ends in the whole polygon.
+template <class K>
+std::optional<bool> segment_in_chord(const ImageLine<K>& line, const clip::Polygon<K>& polygon,
+                                     std::span<const int> sides) {
+  using G = Geometry<K>;
+  std::array<std::pair<const clip::Contour<K>*, std::size_t>, 2> crossed;  // contour, edge
+  int crossings = 0;
+  std::size_t offset = 0;
+  auto scan = [&](const clip::Contour<K>& c) {
+    const std::size_t n = c.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const int here = sides[offset + i], next = sides[offset + (i + 1) % n];
+      if (here == 0) return false;
+      if (here != next) {
+        if (crossings == 2) return false;
+        crossed[crossings++] = {&c, i};
+      }
+    }
+    offset += n;
+    return true;
+  };
+  if (!scan(polygon.outer)) return std::nullopt;
+  for (const auto& h : polygon.holes)
+    if (!scan(h)) return std::nullopt;
+  if (crossings != 2) return std::nullopt;
+  bool inside = true;
+  for (const auto& [c, i] : crossed) {
+    const auto& p = c->points[i];
+    const auto& q = c->points[(i + 1) % c->size()];
+    const int sa = G::orientation(p, q, line.a), sb = G::orientation(p, q, line.b);
+    if (sa < 0 && sb < 0) return false;
+    inside = inside && sa > 0 && sb > 0;
+  }
+  if (inside) return true;
+  return std::nullopt;
+}
+
 // The t-intervals where the line runs inside the polygon: in its closure (`closed`) or in its
 // interior, joined where they meet, and with `unit` only within [0, 1]. They are bounded by the
 // polygon's corners on the line and by the line's crossings with the line each crossing edge lies
 // on; `params` constructs those parameters (PlainParams, or the classifier's shared ones) and may
-// know corners on the line without arithmetic (`on_line`).
+// know corners on the line without arithmetic (`on_line`). `oriented`: the polygon is oriented as
+// the clipper's output, which lets segment_in_chord settle most segments with `unit`.
 template <class K, class Params>
 std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> inside_intervals(
-    const ImageLine<K>& line, const clip::Polygon<K>& polygon, Params& params, bool closed, bool unit) {
+    const ImageLine<K>& line, const clip::Polygon<K>& polygon, Params& params, bool closed, bool unit,
+    bool oriented = false) {
   using G = Geometry<K>;
   using FT = typename G::FT;
   std::vector<FT> ts;
@@ -146,11 +201,27 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   };
   // The side of the line each corner lies on, contour after contour (the outer one first).
   std::vector<int> sides;
+  std::size_t corners = polygon.outer.size();
+  for (const auto& h : polygon.holes) corners += h.size();
+  sides.reserve(corners);
+  auto sides_of = [&](const clip::Contour<K>& c) {
+    for (std::size_t i = 0; i < c.size(); ++i)
+      sides.push_back(params.on_line(c, i) ? 0 : G::orientation(line.a, line.b, c.points[i]));
+  };
+  sides_of(polygon.outer);
+  // An outer contour wholly on one side of the line (no corner on it) keeps the polygon off it.
+  if (std::all_of(sides.begin(), sides.end(), [&](int s) { return s == sides[0] && s != 0; })) return {};
+  for (const auto& h : polygon.holes) sides_of(h);
+  if (unit && oriented)
+    if (const auto inside = segment_in_chord<K>(line, polygon, sides)) {
+      if (*inside) return {{FT(0), FT(1)}};
+      return {};
+    }
+  std::size_t offset = 0;
   auto scan = [&](const clip::Contour<K>& c) {
     const std::size_t n = c.size();
-    sides.resize(sides.size() + n);
-    const std::span<int> side(sides.end() - std::ptrdiff_t(n), sides.end());
-    for (std::size_t i = 0; i < n; ++i) side[i] = params.on_line(c, i) ? 0 : G::orientation(line.a, line.b, c.points[i]);
+    const std::span<const int> side(sides.data() + offset, n);
+    offset += n;
     for (std::size_t i = 0; i < n; ++i) {
       const int op = side[i], oq = side[(i + 1) % n];
       if (op == 0) {
@@ -382,9 +453,9 @@ class Classifier {
     params.line = &line;
     params.lines = &sources_.lines;
     params.own = q.line;
-    params.by_line.clear();
-    params.by_point.clear();
-    scratch.by_source.clear();
+    reset(params.by_line);
+    reset(params.by_point);
+    reset(scratch.by_source);
     scratch.edge_on.clear();
     // A mesh vertex lies exactly in the plane of every source through it.
     auto in_plane = [&](std::uint32_t v, std::int32_t source) {
@@ -441,7 +512,7 @@ class Classifier {
       if (line_misses_box<K>(line.a, line.b, boxes_[i])) return false;
       const bool nearer_all_along = depth.sign0 > 0 && depth.sign1 > 0;
       bool added = false;
-      for (const auto& [lo, hi] : inside_intervals(line, *cover.polygon, params, true, true)) {
+      for (const auto& [lo, hi] : inside_intervals(line, *cover.polygon, params, true, true, true)) {
         occluders_.push_back({lo, hi, &depth});
         if (nearer_all_along) {
           whole.emplace_back(lo, hi);

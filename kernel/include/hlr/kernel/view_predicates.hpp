@@ -92,12 +92,15 @@ class ModelPlane {
   // sign((b - a) × (c - a) · (p - a)): Epick's orientation, exact on doubles.
   int volume_sign(const Vec3& p) const { return CGAL::orientation(ip(a_), ip(b_), ip(c_), ip(p)); }
   int volume_sign(const Point3& p) const {
+    // The point's interval or exact coordinates as they are: p.x() would make a lazy number.
     return filtered_sign([&]<class NT>(std::type_identity<NT>) {
-      auto coordinate = [](const FT& v) {
-        if constexpr (std::is_same_v<NT, CGAL::Exact_rational>) return NT(v.exact());
-        else return NT(CGAL::to_interval(v));
-      };
-      return CGAL::sign(volume<NT>({a_, b_, c_}, coordinate(p.x()), coordinate(p.y()), coordinate(p.z())));
+      if constexpr (std::is_same_v<NT, CGAL::Exact_rational>) {
+        const auto& e = CGAL::exact(p);
+        return CGAL::sign(volume<NT>({a_, b_, c_}, NT(e.x()), NT(e.y()), NT(e.z())));
+      } else {
+        const auto& i = CGAL::approx(p);
+        return CGAL::sign(volume<NT>({a_, b_, c_}, NT(i.x()), NT(i.y()), NT(i.z())));
+      }
     });
   }
   // (b - a) × (c - a) · (p - a) in NT, from the doubles and p's coordinates in NT.

@@ -179,15 +179,21 @@ CGAL::Comparison_result compare_points(const EK::Point_3& a, const EK::Point_3& 
 class TriangleChords {
  public:
   using ET = FT::Exact_type;
+  using I = CGAL::Interval_nt<false>;
   explicit TriangleChords(const std::vector<Mesh>& meshes) : meshes_(meshes) {}
+
+  // An end of a chord: how it is built, and its coordinates as intervals, which order most ends
+  // without building them (two triangles' chords give four ends, of which two are kept).
+  struct End {
+    ModelPointRecipe recipe;
+    std::uint32_t mesh = 0, u = 0, w = 0;  // an edge crossing: the edge u w of mesh
+    std::uint64_t plane_id = 0;
+    std::array<I, 3> at;
+  };
 
   // Triangle `face` of mesh `mesh` against the plane through a, b, c (three input points, not
   // collinear), known to have corners strictly on both sides of it; `plane_id` names the plane
-  // (equal ids: one plane) for sharing crossings.
-  struct End {
-    EK::Point_3 point;
-    ModelPointRecipe recipe;
-  };
+  // (equal ids: one plane) for sharing crossings. The two ends in lexicographic order.
   std::array<End, 2> chord(std::uint32_t mesh, std::uint32_t face, const Vec3& a, const Vec3& b, const Vec3& c,
                            std::uint64_t plane_id) {
     const Mesh& m = meshes_[mesh];
@@ -199,27 +205,34 @@ class TriangleChords {
     int n = 0;
     for (int k = 0; k < 3 && n < 2; ++k) {
       const std::uint32_t u = t[k], w = t[(k + 1) % 3];
-      if (side[k] == 0) {
-        out[n++] = {input_point<EK>(m, u), {ModelPointRecipe::Kind::input_point, m.vertices[u]}};
-      } else if (side[k] * side[(k + 1) % 3] < 0) {
-        out[n++] = {crossing(mesh, u, w, a, b, c, plane_id),
-                    {ModelPointRecipe::Kind::edge_crossing, m.vertices[u], m.vertices[w], a, b, c}};
-      }
+      if (side[k] == 0) out[n++] = end_at_vertex(mesh, u);
+      else if (side[k] * side[(k + 1) % 3] < 0) out[n++] = end_at_crossing(mesh, u, w, a, b, c, plane_id);
     }
     if (n != 2) throw std::logic_error("a triangle straddling a plane did not meet it in two points");
-    if (compare_points(out[1].point, out[0].point) == CGAL::SMALLER) std::swap(out[0], out[1]);
+    if (compare(out[1], out[0]) == CGAL::SMALLER) std::swap(out[0], out[1]);
     return out;
   }
 
- private:
-  // u + t (w - u) with t = s_u / (s_u - s_w) is (s_u w - s_w u) / (s_u - s_w), s the volumes
-  // against the plane (plane_volume, in Mpzf: no gcd): one rational division per coordinate.
-  EK::Point_3 crossing(std::uint32_t mesh, std::uint32_t u, std::uint32_t w, const Vec3& a, const Vec3& b,
-                       const Vec3& c, std::uint64_t plane_id) {
-    auto [it, added] = crossings_.try_emplace({edge_key(u, w), plane_id, mesh});
+  // The lexicographic order of two ends: on their intervals where they decide, else exactly.
+  CGAL::Comparison_result compare(const End& x, const End& y) {
+    for (int j = 0; j < 3; ++j) {
+      if (x.at[j].sup() < y.at[j].inf()) return CGAL::SMALLER;
+      if (x.at[j].inf() > y.at[j].sup()) return CGAL::LARGER;
+      if (!(x.at[j].is_point() && y.at[j].is_point())) return compare_points(point(x), point(y));
+    }
+    return CGAL::EQUAL;  // equal doubles
+  }
+
+  // The end as an exact point; one crossing of an edge with a plane is built once per chunk, as
+  // (s_u w - s_w u) / (s_u - s_w) (plane_volume, in Mpzf: no gcd): one rational division per
+  // coordinate.
+  EK::Point_3 point(const End& e) {
+    const Vec3 &pu = e.recipe.u, &pw = e.recipe.w;
+    if (e.recipe.kind == ModelPointRecipe::Kind::input_point) return EK::Point_3(pu[0], pu[1], pu[2]);
+    auto [it, added] = crossings_.try_emplace({edge_key(e.u, e.w), e.plane_id, e.mesh});
     if (added) {
       using Z = CGAL::Mpzf;
-      const Vec3 &pu = meshes_[mesh].vertices[u], &pw = meshes_[mesh].vertices[w];
+      const auto& [kind, u, w, a, b, c] = e.recipe;
       const Z su = plane_volume(a, b, c, pu), sw = plane_volume(a, b, c, pw);
       const ET den = ET(su - sw);
       FT x[3];
@@ -227,6 +240,30 @@ class TriangleChords {
       it->second = EK::Point_3(x[0], x[1], x[2]);
     }
     return it->second;
+  }
+
+ private:
+  End end_at_vertex(std::uint32_t mesh, std::uint32_t u) const {
+    const Vec3& p = meshes_[mesh].vertices[u];
+    return {{ModelPointRecipe::Kind::input_point, p}, mesh, u, u, 0, {I(p[0]), I(p[1]), I(p[2])}};
+  }
+  // u + t (w - u) with t = s_u / (s_u - s_w), s the volumes against the plane.
+  End end_at_crossing(std::uint32_t mesh, std::uint32_t u, std::uint32_t w, const Vec3& a, const Vec3& b,
+                      const Vec3& c, std::uint64_t plane_id) const {
+    const Vec3 &pu = meshes_[mesh].vertices[u], &pw = meshes_[mesh].vertices[w];
+    CGAL::Protect_FPU_rounding<true> protect;
+    const I su = volume(a, b, c, pu), sw = volume(a, b, c, pw), den = su - sw;
+    std::array<I, 3> at;
+    for (int j = 0; j < 3; ++j) at[j] = (su * I(pw[j]) - sw * I(pu[j])) / den;
+    return {{ModelPointRecipe::Kind::edge_crossing, pu, pw, a, b, c}, mesh, u, w, plane_id, at};
+  }
+
+  // (p - a) . ((b - a) x (c - a)) on intervals (under upward rounding).
+  static I volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+    const I ux = I(b[0]) - a[0], uy = I(b[1]) - a[1], uz = I(b[2]) - a[2];
+    const I vx = I(c[0]) - a[0], vy = I(c[1]) - a[1], vz = I(c[2]) - a[2];
+    const I wx = I(p[0]) - a[0], wy = I(p[1]) - a[1], wz = I(p[2]) - a[2];
+    return wx * (uy * vz - uz * vy) + wy * (uz * vx - ux * vz) + wz * (ux * vy - uy * vx);
   }
 
   const std::vector<Mesh>& meshes_;
@@ -419,10 +456,10 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
             return chords.chord(t.mesh, t.face, om.vertices[pv[0]], om.vertices[pv[1]], om.vertices[pv[2]], plane_id);
           };
           const auto in_f = chord(f, g), in_g = chord(g, f);
-          const auto& lo = compare_points(in_f[0].point, in_g[0].point) == CGAL::LARGER ? in_f[0] : in_g[0];
-          const auto& hi = compare_points(in_f[1].point, in_g[1].point) == CGAL::SMALLER ? in_f[1] : in_g[1];
-          if (compare_points(lo.point, hi.point) == CGAL::SMALLER)
-            out.push_back({key, {lo.point, hi.point, f.face, g.face, meeting_degrees, lo.recipe, hi.recipe}});
+          const auto& lo = chords.compare(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
+          const auto& hi = chords.compare(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
+          if (chords.compare(lo, hi) == CGAL::SMALLER)
+            out.push_back({key, {chords.point(lo), chords.point(hi), f.face, g.face, meeting_degrees, lo.recipe, hi.recipe}});
           continue;
         }
         const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);

@@ -1,12 +1,12 @@
-// Welding and face preparation on import (scene_faces.hpp), exact on the input doubles: Epeck
-// decides collinearity and coplanarity in 3D, Epick's exact predicates decide simplicity and the
-// triangulation in a plane the face projects to without loss (coordinate axes dropped, nothing
-// constructed).
+// Welding and face preparation on import (scene_faces.hpp), exact on the input doubles: Epick's
+// exact predicates decide collinearity and coplanarity in 3D, and simplicity and the triangulation
+// in a plane the face projects to without loss (coordinate axes dropped, nothing constructed).
 #include "scene_faces.hpp"
 
 #include "scene_readers.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -39,7 +39,7 @@ using Loop = std::vector<std::uint32_t>;
 }
 
 // The corner of `loop` that spans a plane with its first two, or loop.size() when all are on one line.
-std::size_t plane_corner(const std::vector<ExactPoint3>& p, const Loop& loop) {
+std::size_t plane_corner(const std::vector<InputPoint3>& p, const Loop& loop) {
   for (std::size_t k = 2; k < loop.size(); ++k)
     if (!CGAL::collinear(p[loop[0]], p[loop[1]], p[loop[k]])) return k;
   return loop.size();
@@ -49,15 +49,16 @@ std::size_t plane_corner(const std::vector<ExactPoint3>& p, const Loop& loop) {
 // a bijection of the plane, so simplicity and orientation (up to one sign) are kept.
 struct PlaneProjection {
   int u = 0, v = 1;
-  PlaneProjection(const std::vector<ExactPoint3>& p, const Loop& loop, std::size_t k) {
-    const EK::Vector_3 n = CGAL::cross_product(p[loop[1]] - p[loop[0]], p[loop[k]] - p[loop[0]]);
+  PlaneProjection(const std::vector<InputPoint3>& p, const Loop& loop, std::size_t k) {
+    auto exact = [&](std::uint32_t v) { return EK::Point_3(p[v].x(), p[v].y(), p[v].z()); };
+    const EK::Vector_3 n = CGAL::cross_product(exact(loop[1]) - exact(loop[0]), exact(loop[k]) - exact(loop[0]));
     const EK::FT ax = CGAL::abs(n.x()), ay = CGAL::abs(n.y()), az = CGAL::abs(n.z());
     const int drop = az >= ax && az >= ay ? 2 : (ay >= ax ? 1 : 0);
     u = drop == 0 ? 1 : 0;
     v = drop == 2 ? 1 : 2;
   }
-  IK::Point_2 operator()(const ExactPoint3& q) const {
-    return {CGAL::to_double(q.cartesian(u)), CGAL::to_double(q.cartesian(v))};  // input doubles: exact
+  IK::Point_2 operator()(const InputPoint3& q) const {
+    return {q.cartesian(u), q.cartesian(v)};
   }
 };
 
@@ -91,7 +92,7 @@ void append(PreparedFaces& out, Loop face, std::uint8_t fan_edges = 0) {
 }
 
 // One simple loop of distinct corners, not all on one line.
-void prepare_loop(const std::vector<ExactPoint3>& p, Loop loop, std::size_t file_face, PreparedFaces& out) {
+void prepare_loop(const std::vector<InputPoint3>& p, Loop loop, std::size_t file_face, PreparedFaces& out) {
   const std::size_t k = plane_corner(p, loop);
   bool planar = true;
   for (std::size_t i = 3; i < loop.size() && planar; ++i)
@@ -119,7 +120,7 @@ void prepare_loop(const std::vector<ExactPoint3>& p, Loop loop, std::size_t file
 // Loops of one face in one plane: the region inside an odd number of them, as triangles run the
 // way the loop that bounds them runs (so that edges shared with neighbouring faces keep their
 // direction).
-void triangulate_region(const std::vector<ExactPoint3>& p, const std::vector<Loop>& loops, std::size_t k,
+void triangulate_region(const std::vector<InputPoint3>& p, const std::vector<Loop>& loops, std::size_t k,
                         std::size_t file_face, PreparedFaces& out) {
   struct FaceInfo {
     int level = -1;  // nesting depth: how many loops enclose the face
@@ -188,7 +189,7 @@ void triangulate_region(const std::vector<ExactPoint3>& p, const std::vector<Loo
 
 }  // namespace
 
-std::size_t prepare_face(const std::vector<ExactPoint3>& points, const std::vector<std::uint32_t>& face,
+std::size_t prepare_face(const std::vector<InputPoint3>& points, const std::vector<std::uint32_t>& face,
                          std::size_t file_face, PreparedFaces& out) {
   const std::size_t before = out.faces.size();
   bool split = false;

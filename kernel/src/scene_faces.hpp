@@ -9,7 +9,7 @@
 //     must be simple.
 #pragma once
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <array>
 #include <cstdint>
@@ -32,8 +32,8 @@ struct PreparedFaces {
 // Appends what `face` (welded indices) becomes; nothing when it is degenerate (no loop of three
 // corners off one line). Returns the number of faces appended. Throws FormatError naming the
 // face number `file_face` when a planar face (or the loops of a split face) cross themselves.
-using ExactPoint3 = CGAL::Exact_predicates_exact_constructions_kernel::Point_3;
-std::size_t prepare_face(const std::vector<ExactPoint3>& points, const std::vector<std::uint32_t>& face,
+using InputPoint3 = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+std::size_t prepare_face(const std::vector<InputPoint3>& points, const std::vector<std::uint32_t>& face,
                          std::size_t file_face, PreparedFaces& out);
 
 }  // namespace hlr::scene_detail

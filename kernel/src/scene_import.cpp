@@ -165,7 +165,7 @@ std::string read_file(const std::string& path) {
   return bytes;
 }
 
-using scene_detail::ExactPoint3;
+using scene_detail::InputPoint3;
 
 // Faces with an edge of more than two faces, or of two faces running the same way along it.
 std::size_t count_nonmanifold(const Mesh& mesh, const std::vector<EdgeUse>& uses) {
@@ -214,7 +214,7 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
   const std::vector<std::uint32_t> canonical = scene_detail::weld_vertices(raw.vertices);
   std::size_t welded = 0;
   for (std::uint32_t v = 0; v < canonical.size(); ++v) welded += canonical[v] != v;
-  std::vector<ExactPoint3> points;
+  std::vector<InputPoint3> points;
   points.reserve(raw.vertices.size());
   for (const auto& v : raw.vertices) points.emplace_back(v[0], v[1], v[2]);
 

@@ -247,7 +247,8 @@ TEST(ExactKernel, PlaneSideIsTheExactOrientation) {
 // The view coordinates of an input point are one lazy number each (view.hpp's RowDotRep): their
 // intervals must hold, and their exact values be, the dot products with the exact basis of
 // DESIGN.md rule 1 (X = d × up, Y = X × d, Z = -d), for named views and random directions and up
-// vectors, on random points, on a coarse grid, far from the origin and of mixed magnitude.
+// vectors, on random points, on a coarse grid, far from the origin and of mixed magnitude, and on
+// constructed points.
 TEST(ExactKernel, ViewCoordinatesAreTheExactDotProducts) {
   using Q = CGAL::Exact_rational;
   std::mt19937_64 random(20261205);
@@ -275,6 +276,19 @@ TEST(ExactKernel, ViewCoordinatesAreTheExactDotProducts) {
       const auto approx = CGAL::to_interval(*coordinates[k]);  // before the exact value is asked for
       const Q want = (*rows[k])[0] * Q(p[0]) + (*rows[k])[1] * Q(p[1]) + (*rows[k])[2] * Q(p[2]);
       ASSERT_EQ(Q(coordinates[k]->exact()), want) << i << " axis " << k;
+      ASSERT_LE(Q(approx.first), want) << i << " axis " << k;
+      ASSERT_GE(Q(approx.second), want) << i << " axis " << k;
+    }
+    // A constructed point (a penetration line's end, view.hpp's PointRowDotRep): the same.
+    const Vec3 q{value(mode), value(mode), value(mode)};
+    const auto m = CGAL::midpoint(ExactKernel::Point_3(p[0], p[1], p[2]), ExactKernel::Point_3(q[0], q[1], q[2]));
+    const auto w = frame.to_view(m);
+    const ExactKernel::FT* constructed[3] = {&w.x, &w.y, &w.z};
+    for (int k = 0; k < 3; ++k) {
+      const auto approx = CGAL::to_interval(*constructed[k]);
+      const Q mid[3] = {(Q(p[0]) + Q(q[0])) / 2, (Q(p[1]) + Q(q[1])) / 2, (Q(p[2]) + Q(q[2])) / 2};
+      const Q want = (*rows[k])[0] * mid[0] + (*rows[k])[1] * mid[1] + (*rows[k])[2] * mid[2];
+      ASSERT_EQ(Q(constructed[k]->exact()), want) << i << " axis " << k;
       ASSERT_LE(Q(approx.first), want) << i << " axis " << k;
       ASSERT_GE(Q(approx.second), want) << i << " axis " << k;
     }

@@ -126,6 +126,39 @@ class RowDotRep final : public CGAL::Lazy_exact_nt_rep<ET> {
   int row_;
   Vec3 p_;
 };
+
+// The same for a constructed point (a penetration line's end): one lazy number per view
+// coordinate, its interval from the point's intervals, its exact value from the point's exact
+// coordinates, instead of a lazy number per model coordinate and a chain for the dot product.
+template <class ET>
+class PointRowDotRep final : public CGAL::Lazy_exact_nt_rep<ET> {
+  using Base = CGAL::Lazy_exact_nt_rep<ET>;
+
+ public:
+  // Under upward rounding (CGAL::Protect_FPU_rounding), as CGAL's unprotected intervals need.
+  PointRowDotRep(std::shared_ptr<const ExactRows> rows, int row, const ExactKernel::Point_3& p)
+      : Base(interval((*rows)[row], CGAL::approx(p))), rows_(std::move(rows)), row_(row), p_(p) {}
+
+  void update_exact() const override {
+    const auto& row = (*rows_)[row_];
+    const auto& p = CGAL::exact(p_);
+    ET sum(0);
+    for (int k = 0; k < 3; ++k)
+      if (!CGAL::is_zero(row[k])) sum += row[k].exact() * p[k];
+    auto* exact = new typename Base::Indirect(std::move(sum));
+    this->set_at(exact);
+    this->set_ptr(exact);
+  }
+
+ private:
+  template <class IntervalPoint>
+  static CGAL::Interval_nt<false> interval(const std::array<ExactKernel::FT, 3>& row, const IntervalPoint& p) {
+    return CGAL::approx(row[0]) * p.x() + CGAL::approx(row[1]) * p.y() + CGAL::approx(row[2]) * p.z();
+  }
+  std::shared_ptr<const ExactRows> rows_;
+  int row_;
+  ExactKernel::Point_3 p_;
+};
 }  // namespace view_detail
 
 // The exact, unnormalized view basis for kernel K.
@@ -227,7 +260,16 @@ class ViewFrame {
   // An exact model-space point (a constructed one: a penetration line's end). The inexact
   // kernels take it rounded, which is what makes them inexact.
   ViewPoint<K> to_view(const ExactKernel::Point_3& p) const {
-    if constexpr (std::is_same_v<FT, ExactKernel::FT>) return to_view(p.x(), p.y(), p.z());
+    if constexpr (std::is_same_v<FT, ExactKernel::FT>) {
+      if (!view_.eye) {
+        using ET = ExactKernel::FT::Exact_type;
+        using view_detail::PointRowDotRep;
+        CGAL::Protect_FPU_rounding<true> protect;
+        return {FT(new PointRowDotRep<ET>(rows_, 0, p)), FT(new PointRowDotRep<ET>(rows_, 1, p)),
+                FT(new PointRowDotRep<ET>(rows_, 2, p))};
+      }
+      return to_view(p.x(), p.y(), p.z());
+    }
     else return to_view(Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
   }
 

@@ -92,30 +92,36 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   const auto write_start = std::chrono::steady_clock::now();
   auto write_seconds = [&] { return drawing.times.write + seconds_since(write_start); };
   // What the SVG, PDF and DXF draw, worked out once for all, and what they merge and recover, for
-  // the JSON's stats and the summary (without a sheet, the merge alone).
+  // the JSON's stats and the summary (without a sheet, the merge alone, beside the JSON's pieces).
   const bool on_sheet = std::any_of(formats.begin(), formats.end(), [](Format f) {
     return f == Format::svg || f == Format::pdf || f == Format::dxf;
   });
   exporter::SheetLines sheet;
+  bool counted = false;  // the sheet's counts are in the drawing's stats
   if (on_sheet) {
     sheet = exporter::sheet_lines(drawing, style);
     if (style.scale)
       if (const auto overflow = exporter::sheet_overflow(sheet, style))
         throw UsageError("--scale " + options.style.scale + ": " + *overflow);
     drawing.curves = exporter::LineDrawing::CurveCounts{sheet.curves.circles.size(), sheet.curves.arcs};
-  } else {
-    sheet.merged = exporter::sheet_segments(drawing, style);
+    exporter::record_sheet_counts(drawing, sheet.merged, style);
+    counted = true;
   }
-  const std::size_t merged = sheet.merged.merged;
-  exporter::record_sheet_counts(drawing, sheet.merged, style);
   run.stage("writing " + std::to_string(files.size()) + (files.size() == 1 ? " output" : " outputs"));
   for (const bool json : {false, true}) {
     for (std::size_t i = 0; i < files.size(); ++i) {
       if ((formats[i] == Format::json) != json) continue;
       switch (formats[i]) {
-        case Format::json:
-          exporter::write_lines_json(drawing, [&](std::string_view text) { files[i].write(text); }, write_seconds);
+        case Format::json: {
+          auto sink = [&](std::string_view text) { files[i].write(text); };
+          if (counted) {
+            exporter::write_lines_json(drawing, sink, write_seconds);
+          } else {  // the merge, for the stats alone, beside the pieces
+            sheet.merged = exporter::write_lines_json_merging(drawing, style, sink, write_seconds);
+            counted = true;
+          }
           break;
+        }
         case Format::svg: files[i].write(exporter::lines_svg(drawing, style, sheet)); break;
         case Format::pdf: files[i].write(exporter::lines_pdf(drawing, style, sheet)); break;
         case Format::dxf: files[i].write(exporter::lines_dxf(drawing, style, sheet)); break;
@@ -126,6 +132,11 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
       }
     }
   }
+  if (!counted) {
+    sheet.merged = exporter::sheet_segments(drawing, style);
+    exporter::record_sheet_counts(drawing, sheet.merged, style);
+  }
+  const std::size_t merged = sheet.merged.merged;
   files.commit();
   const double written = write_seconds();
   run.finish(scene);

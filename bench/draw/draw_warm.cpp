@@ -48,10 +48,9 @@ int main(int argc, char** argv) {
     drawing.times.total += read;
     const auto write_start = std::chrono::steady_clock::now();
     const hlr::exporter::DrawingStyle style;
-    hlr::exporter::record_sheet_counts(drawing, hlr::exporter::sheet_segments(drawing, style), style);
     std::string document;
-    hlr::exporter::write_lines_json(drawing, [&](std::string_view text) { document += text; },
-                                    [&] { return drawing.times.write + since(write_start); });
+    hlr::exporter::write_lines_json_merging(drawing, style, [&](std::string_view text) { document += text; },
+                                            [&] { return drawing.times.write + since(write_start); });
     nlohmann::json stats = nlohmann::json::parse(document)["stats"];
     if (best.is_null() || stats["seconds"].get<double>() < best["seconds"].get<double>())
       best = {{"seconds", stats["seconds"]}, {"stage_seconds", stats["stage_seconds"]}, {"runs", runs}};

@@ -16,6 +16,8 @@
 #include "numbers.hpp"
 
 #include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+#include <tbb/task_group.h>
 
 #include <string_view>
 
@@ -177,8 +179,10 @@ json view_json(const ViewInfo& v) {
 
 }  // namespace detail
 
-void write_lines_json(const LineDrawing& drawing, const std::function<void(std::string_view)>& sink,
-                      const std::function<double()>& write_seconds) {
+namespace {
+// The document; `before_stats`, when set, runs once every piece is written and before the stats are.
+void write_document(const LineDrawing& drawing, const std::function<void(std::string_view)>& sink,
+                    const std::function<double()>& write_seconds, const std::function<void()>& before_stats) {
   Output output(sink);
   std::string& out = output.text;
   // The top level's members in the order of their keys, as dump() writes them.
@@ -197,11 +201,48 @@ void write_lines_json(const LineDrawing& drawing, const std::function<void(std::
                   {{"resolution", r->resolution}, {"width", r->width}, {"height", r->height}, {"pixel", r->pixel}});
     out += ',';
   }
+  if (before_stats) before_stats();
   append_member(out, "stats", stats_json(drawing, write_seconds ? write_seconds() : drawing.times.write));
   out += ',';
   append_member(out, "view", detail::view_json(drawing.view));
   out += "\n}\n";
   output.flush();
+}
+
+}  // namespace
+
+void write_lines_json(const LineDrawing& drawing, const std::function<void(std::string_view)>& sink,
+                      const std::function<double()>& write_seconds) {
+  write_document(drawing, sink, write_seconds, {});
+}
+
+MergedSegments write_lines_json_merging(LineDrawing& drawing, const DrawingStyle& style,
+                                        const std::function<void(std::string_view)>& sink,
+                                        const std::function<double()>& write_seconds) {
+  MergedSegments merged;
+  auto merge = [&] { merged = sheet_segments(drawing, style); };
+  auto record = [&] { record_sheet_counts(drawing, merged, style); };
+  // Below this, starting a task takes longer than the merge saves.
+  constexpr std::size_t kSegmentsBeside = 20000;
+  if (drawing.segments.size() < kSegmentsBeside ||
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) < 2) {
+    merge();
+    record();
+    write_document(drawing, sink, write_seconds, {});
+    return merged;
+  }
+  tbb::task_group beside;
+  beside.run(merge);
+  try {
+    write_document(drawing, sink, write_seconds, [&] {
+      beside.wait();
+      record();
+    });
+  } catch (...) {
+    beside.wait();  // the group must not be destroyed while the merge runs
+    throw;
+  }
+  return merged;
 }
 
 std::string lines_json(const LineDrawing& drawing, const std::function<double()>& write_seconds) {

@@ -12,6 +12,7 @@
 #include <dl_dxf.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <bit>
@@ -367,6 +368,31 @@ TEST(LinesJson, WriteStageCountsTheDocumentUpToItsStats) {
   j = json::parse(lines_json(d));
   EXPECT_EQ(j["stats"]["stage_seconds"],
             json({{"read", 0.25}, {"intersections", 0.0}, {"zbuffer", 0.0}, {"lines", 0.0}, {"write", 0.5}}));
+}
+
+// Without a sheet, hlr draw merges beside the JSON's pieces (write_lines_json_merging): the same
+// document and counts as merging first, on a drawing large enough to merge on a second thread.
+TEST(LinesJson, MergingBesideThePiecesWritesWhatMergingFirstWrites) {
+  std::mt19937_64 random(20261205);
+  std::uniform_real_distribution<double> coordinate(0, 100);
+  std::vector<DrawingSegment> segments;
+  for (int i = 0; i < 15000; ++i) {
+    const Point2 a{coordinate(random), coordinate(random)}, b{coordinate(random), coordinate(random)};
+    segments.push_back(seg(a, b, i % 3 != 0));
+    segments.push_back(seg({a[0], a[1] + 1e-7}, {b[0], b[1] + 1e-7}, i % 2 == 0));  // merged with it
+  }
+  const DrawingStyle style;
+  LineDrawing first = drawing_of(segments), beside = first;
+  const MergedSegments want = sheet_segments(first, style);
+  record_sheet_counts(first, want, style);
+  ASSERT_GT(want.merged, 10000u);
+  const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+  std::string document;
+  const MergedSegments got =
+      write_lines_json_merging(beside, style, [&](std::string_view text) { document += text; });
+  EXPECT_EQ(got.merged, want.merged);
+  EXPECT_EQ(got.segments.size(), want.segments.size());
+  EXPECT_EQ(document, lines_json(first));
 }
 
 TEST(LinesJson, CustomViewHasNoNameAndEmptyDrawingHasEmptyLines) {

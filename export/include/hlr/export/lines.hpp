@@ -282,6 +282,12 @@ std::optional<std::string> sheet_overflow(const SheetLines& sheet, const Drawing
 // reading the meshes to the (nearly) finished document.
 void write_lines_json(const LineDrawing& drawing, const std::function<void(std::string_view)>& sink,
                       const std::function<double()>& write_seconds = {});
+// hlr draw's JSON when no sheet is drawn: sheet_segments, which only the stats need then
+// (merged_segments, contact_segments), runs beside the writing of the pieces on a second thread,
+// and record_sheet_counts before the stats are written. Returns what sheet_segments made.
+MergedSegments write_lines_json_merging(LineDrawing& drawing, const DrawingStyle& style,
+                                        const std::function<void(std::string_view)>& sink,
+                                        const std::function<double()>& write_seconds = {});
 // The same document as one string.
 std::string lines_json(const LineDrawing& drawing, const std::function<double()>& write_seconds = {});
 // `sheet` must be sheet_lines(drawing, style); the overloads without it work it out themselves.

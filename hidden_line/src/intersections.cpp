@@ -101,8 +101,8 @@ struct FaceRecord {
   bool triangle;
 };
 
-// Whether triangle g has corners strictly on both sides of the plane `f` of triangle f; corners
-// g shares with f (same mesh, same vertex) lie in that plane and are skipped.
+// Whether triangle g has corners strictly on both sides of f_plane, the plane of triangle f;
+// corners g shares with f (same mesh, same vertex) lie in that plane and are skipped.
 bool straddles(const PlaneSide& f_plane, const FaceRecord& g, const FaceRecord& f) {
   const bool same_mesh = f.mesh == g.mesh;
   bool below = false, above = false;
@@ -337,11 +337,11 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     if (same_mesh) {
       // Neighbours around a corner straddle each other's planes all over curved surfaces; they
       // cross only if the two rays of their intersection line from the shared corner agree.
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          if (fc[i] == gc[j])
-            return crosses_at_shared_corner(f.corner[i], f.corner[(i + 1) % 3], f.corner[(i + 2) % 3],
-                                            g.corner[(j + 1) % 3], g.corner[(j + 2) % 3]);
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q)
+          if (fc[p] == gc[q])
+            return crosses_at_shared_corner(f.corner[p], f.corner[(p + 1) % 3], f.corner[(p + 2) % 3],
+                                            g.corner[(q + 1) % 3], g.corner[(q + 2) % 3]);
     }
     return CGAL::do_intersect(IK::Triangle_3(ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)),
                               IK::Triangle_3(ipoint(g, 0), ipoint(g, 1), ipoint(g, 2)));

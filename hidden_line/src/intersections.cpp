@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -482,35 +483,59 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
       }
     }
   });
-  std::map<GroupPair, std::vector<Piece>> pieces;
-  for (auto& chunk : chunk_pieces)
-    for (auto& [key, piece] : chunk) pieces[key].push_back(std::move(piece));
+  // The pieces of each pair of groups, in chunk order: a stable sort of references by key.
+  std::vector<std::pair<GroupPair, const Piece*>> by_group;
+  for (const auto& chunk : chunk_pieces)
+    for (const auto& [key, piece] : chunk) by_group.emplace_back(key, &piece);
+  std::stable_sort(by_group.begin(), by_group.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<std::size_t> run_starts;  // where each pair of groups begins in by_group, and its end
+  for (std::size_t k = 0; k < by_group.size(); ++k)
+    if (k == 0 || by_group[k].first != by_group[k - 1].first) run_starts.push_back(k);
+  run_starts.push_back(by_group.size());
 
   // Join the pieces of each group pair where they meet or overlap (points along one line are
-  // ordered lexicographically).
-  std::vector<IntersectionSegment> out;
-  for (auto& [key, list] : pieces) {
-    std::sort(list.begin(), list.end(),
-              [](const Piece& x, const Piece& y) { return compare_points(x.a, y.a) == CGAL::SMALLER; });
-    for (std::size_t k = 0; k < list.size();) {
-      IntersectionSegment s{list[k].a,          list[k].b,          std::get<0>(key),        std::get<2>(key),
-                            {list[k].face_a}, {list[k].face_b}, list[k].meeting_degrees, list[k].recipe_a,
-                            list[k].recipe_b};
-      for (++k; k < list.size() && compare_points(list[k].a, s.b) != CGAL::LARGER; ++k) {
-        if (compare_points(list[k].b, s.b) == CGAL::LARGER) {
-          s.b = list[k].b;
-          s.recipe_b = list[k].recipe_b;
+  // ordered lexicographically). Pairs of groups are joined side by side in fixed chunks, gathered
+  // in key order.
+  constexpr std::size_t kRunsPerChunk = 1024;
+  const std::size_t runs = run_starts.size() - 1;
+  std::vector<std::vector<IntersectionSegment>> joined((runs + kRunsPerChunk - 1) / kRunsPerChunk);
+  parallel_chunks(joined.size(), 1, [&](const auto& range) {
+    std::vector<const Piece*> list;
+    for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
+      stop.check();
+      for (std::size_t r = chunk * kRunsPerChunk; r < std::min(runs, (chunk + 1) * kRunsPerChunk); ++r) {
+        const GroupPair& key = by_group[run_starts[r]].first;
+        list.clear();
+        for (std::size_t k = run_starts[r]; k < run_starts[r + 1]; ++k) list.push_back(by_group[k].second);
+        std::sort(list.begin(), list.end(),
+                  [](const Piece* x, const Piece* y) { return compare_points(x->a, y->a) == CGAL::SMALLER; });
+        for (std::size_t k = 0; k < list.size();) {
+          const Piece& first = *list[k];
+          IntersectionSegment s{first.a,          first.b,          std::get<0>(key),      std::get<2>(key),
+                                {first.face_a}, {first.face_b}, first.meeting_degrees, first.recipe_a,
+                                first.recipe_b};
+          for (++k; k < list.size() && compare_points(list[k]->a, s.b) != CGAL::LARGER; ++k) {
+            if (compare_points(list[k]->b, s.b) == CGAL::LARGER) {
+              s.b = list[k]->b;
+              s.recipe_b = list[k]->recipe_b;
+            }
+            s.faces_a.push_back(list[k]->face_a);
+            s.faces_b.push_back(list[k]->face_b);
+          }
+          for (auto* fs : {&s.faces_a, &s.faces_b}) {
+            std::sort(fs->begin(), fs->end());
+            fs->erase(std::unique(fs->begin(), fs->end()), fs->end());
+          }
+          joined[chunk].push_back(std::move(s));
         }
-        s.faces_a.push_back(list[k].face_a);
-        s.faces_b.push_back(list[k].face_b);
       }
-      for (auto* fs : {&s.faces_a, &s.faces_b}) {
-        std::sort(fs->begin(), fs->end());
-        fs->erase(std::unique(fs->begin(), fs->end()), fs->end());
-      }
-      out.push_back(std::move(s));
     }
-  }
+  });
+  std::vector<IntersectionSegment> out;
+  std::size_t total = 0;
+  for (const auto& j : joined) total += j.size();
+  out.reserve(total);
+  for (auto& j : joined) std::move(j.begin(), j.end(), std::back_inserter(out));
   return out;
 }
 

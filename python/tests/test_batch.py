@@ -198,8 +198,10 @@ def bumpy_grid(path, n):
 def test_a_task_stops_its_job_at_the_batchs_deadline(tmp_path):
     from hlrdraw import batch
     grid = bumpy_grid(tmp_path / "grid.off", 300).read_bytes()
-    job = {"job": 3, "arguments": ["draw", "grid.off", "--threads", "1", "-o", "a.svg", "-o", "a.json"],
-           "inputs": [1], "outputs": [5, 7]}
+    # With a sun's shadows: far longer than the deadline, however fast the drawing alone becomes.
+    job = {"job": 3, "arguments": ["draw", "grid.off", "--threads", "1", "--sun", "1,2,-3", "-o", "a.svg",
+                                   "-o", "a.json"],
+           "inputs": [1], "outputs": [7, 9]}
     stopped = batch.run_job(job, {"grid.off": grid}, HLR, deadline=time.time() + 1, timeout=1)
     assert stopped["outcome"] == "stopped", stopped
     assert stopped["problem"] == "the batch's --timeout 1 expired; no file written"

@@ -37,7 +37,7 @@ class CliLimits : public ::testing::Test {
   }
 
   // A bumpy grid of n x n vertices, 2 (n - 1)^2 triangles: no two of them coplanar, so that the
-  // area sort and the line classification have real work (at n = 300, `hlr draw` about 1.5 s on
+  // area sort and the line classification have real work (at n = 300, `hlr draw` about 1 s on
   // this project's 2-core machine; with --sun, which sorts and casts shadows, some 30 s).
   fs::path bumpy_grid(int n) const {
     const fs::path path = dir_ / "grid.off";
@@ -65,8 +65,11 @@ class CliLimits : public ::testing::Test {
 
   Outcome hlr(const std::vector<std::string>& args) const { return finish(start(args)); }
 
+  // With a sun's shadows, so that a stop always comes while the run works, however fast the
+  // drawing alone becomes.
   std::vector<std::string> draw_args(const fs::path& mesh) const {
-    return {"draw", mesh.string(), "--view", "iso", "-o", out("a.svg"), "-o", out("a.json"), "-o", out("a.dxf")};
+    return {"draw", mesh.string(), "--view", "iso", "--sun", "1,2,-3", "-o", out("a.svg"),
+            "-o", out("a.json"), "-o", out("a.dxf")};
   }
   std::string out(const std::string& name) const { return (dir_ / "out" / name).string(); }
 
@@ -120,7 +123,8 @@ TEST_F(CliLimits, BatchTimeoutStopsTheRunningJobsAndRunsNoMore) {
 TEST_F(CliLimits, BatchJobTimeoutFailsTheJobAsItsOwnTimeoutWould) {
   bumpy_grid(300);
   spit(dir_ / "batch.json", R"({"format": "hlr-batch/1", "jobs": [
-      {"command": "draw", "meshes": ["grid.off"], "outputs": ["out/a.svg", "out/a.json"]}]})");
+      {"command": "draw", "meshes": ["grid.off"], "options": ["--sun", "1,2,-3"],
+       "outputs": ["out/a.svg", "out/a.json"]}]})");
   const Outcome run = hlr({"batch", (dir_ / "batch.json").string(), "--job-timeout", "0.5"});
   EXPECT_EQ(run.exit_code, 1) << run.err;
   EXPECT_EQ(run.out.rfind("job 0 failed: --timeout 0.5: the run stopped after 0.5 s while ", 0), 0u) << run.out;

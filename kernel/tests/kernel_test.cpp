@@ -279,7 +279,7 @@ TEST(ExactKernel, ViewCoordinatesAreTheExactDotProducts) {
       ASSERT_LE(Q(approx.first), want) << i << " axis " << k;
       ASSERT_GE(Q(approx.second), want) << i << " axis " << k;
     }
-    // A constructed point (a penetration line's end, view.hpp's PointRowDotRep): the same.
+    // A constructed point (a penetration line's end): the same.
     const Vec3 q{value(mode), value(mode), value(mode)};
     const auto m = CGAL::midpoint(ExactKernel::Point_3(p[0], p[1], p[2]), ExactKernel::Point_3(q[0], q[1], q[2]));
     const auto w = frame.to_view(m);

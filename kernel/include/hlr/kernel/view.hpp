@@ -92,72 +92,51 @@ struct ViewPoint {
 };
 
 namespace view_detail {
-// One view coordinate of an input point on the exact kernel, row · p with an exact basis row, as a
-// single lazy number: its interval from the row's intervals and the doubles, its exact value from
-// the row's exact values when a predicate first needs it. The same number as the sum of products
-// plain arithmetic would make, without its chain of lazy nodes (about eleven per point in an iso
-// view), each of which an exact evaluation would visit. Built on CGAL's Lazy_exact_nt_rep, as
-// CGAL's own constants are (CGAL/Lazy_exact_nt.h).
+// One view coordinate of a point on the exact kernel, row · p with an exact basis row, as a single
+// lazy number: its interval from the row's intervals and the point's, its exact value from the
+// row's exact values and the point's when a predicate first needs it. The same number as the sum
+// of products plain arithmetic would make, without its chain of lazy nodes (about eleven per point
+// in an iso view), each of which an exact evaluation would visit. Point: an input point (Vec3), or
+// a constructed one (an Epeck point: a penetration line's end, which would otherwise also take a
+// lazy number per model coordinate). Built on CGAL's Lazy_exact_nt_rep, as CGAL's own constants
+// are (CGAL/Lazy_exact_nt.h).
 using ExactRows = std::array<std::array<ExactKernel::FT, 3>, 3>;
-template <class ET>
+template <class ET, class Point>
 class RowDotRep final : public CGAL::Lazy_exact_nt_rep<ET> {
   using Base = CGAL::Lazy_exact_nt_rep<ET>;
+  static constexpr bool input = std::is_same_v<Point, Vec3>;
 
  public:
   // Under upward rounding (CGAL::Protect_FPU_rounding), as CGAL's unprotected intervals need.
-  RowDotRep(std::shared_ptr<const ExactRows> rows, int row, const Vec3& p)
+  RowDotRep(std::shared_ptr<const ExactRows> rows, int row, const Point& p)
       : Base(interval((*rows)[row], p)), rows_(std::move(rows)), row_(row), p_(p) {}
 
   void update_exact() const override {
     const auto& row = (*rows_)[row_];
+    auto coordinate = [&](int k) {
+      if constexpr (input) return ET(p_[k]);
+      else return CGAL::exact(p_)[k];
+    };
     ET sum(0);
     for (int k = 0; k < 3; ++k)
-      if (!CGAL::is_zero(row[k])) sum += row[k].exact() * ET(p_[k]);
+      if (!CGAL::is_zero(row[k])) sum += row[k].exact() * coordinate(k);
     auto* exact = new typename Base::Indirect(std::move(sum));
     this->set_at(exact);
     this->set_ptr(exact);
   }
 
  private:
-  static CGAL::Interval_nt<false> interval(const std::array<ExactKernel::FT, 3>& row, const Vec3& p) {
-    return CGAL::approx(row[0]) * p[0] + CGAL::approx(row[1]) * p[1] + CGAL::approx(row[2]) * p[2];
+  static CGAL::Interval_nt<false> interval(const std::array<ExactKernel::FT, 3>& row, const Point& p) {
+    if constexpr (input) {
+      return CGAL::approx(row[0]) * p[0] + CGAL::approx(row[1]) * p[1] + CGAL::approx(row[2]) * p[2];
+    } else {
+      const auto& a = CGAL::approx(p);
+      return CGAL::approx(row[0]) * a.x() + CGAL::approx(row[1]) * a.y() + CGAL::approx(row[2]) * a.z();
+    }
   }
   std::shared_ptr<const ExactRows> rows_;
   int row_;
-  Vec3 p_;
-};
-
-// The same for a constructed point (a penetration line's end): one lazy number per view
-// coordinate, its interval from the point's intervals, its exact value from the point's exact
-// coordinates, instead of a lazy number per model coordinate and a chain for the dot product.
-template <class ET>
-class PointRowDotRep final : public CGAL::Lazy_exact_nt_rep<ET> {
-  using Base = CGAL::Lazy_exact_nt_rep<ET>;
-
- public:
-  // Under upward rounding (CGAL::Protect_FPU_rounding), as CGAL's unprotected intervals need.
-  PointRowDotRep(std::shared_ptr<const ExactRows> rows, int row, const ExactKernel::Point_3& p)
-      : Base(interval((*rows)[row], CGAL::approx(p))), rows_(std::move(rows)), row_(row), p_(p) {}
-
-  void update_exact() const override {
-    const auto& row = (*rows_)[row_];
-    const auto& p = CGAL::exact(p_);
-    ET sum(0);
-    for (int k = 0; k < 3; ++k)
-      if (!CGAL::is_zero(row[k])) sum += row[k].exact() * p[k];
-    auto* exact = new typename Base::Indirect(std::move(sum));
-    this->set_at(exact);
-    this->set_ptr(exact);
-  }
-
- private:
-  template <class IntervalPoint>
-  static CGAL::Interval_nt<false> interval(const std::array<ExactKernel::FT, 3>& row, const IntervalPoint& p) {
-    return CGAL::approx(row[0]) * p.x() + CGAL::approx(row[1]) * p.y() + CGAL::approx(row[2]) * p.z();
-  }
-  std::shared_ptr<const ExactRows> rows_;
-  int row_;
-  ExactKernel::Point_3 p_;
+  Point p_;
 };
 }  // namespace view_detail
 
@@ -237,12 +216,7 @@ class ViewFrame {
 
   ViewPoint<K> to_view(const Vec3& p) const {
     if constexpr (std::is_same_v<FT, ExactKernel::FT>)
-      if (!view_.eye) {
-        using ET = ExactKernel::FT::Exact_type;
-        CGAL::Protect_FPU_rounding<true> protect;
-        return {FT(new view_detail::RowDotRep<ET>(rows_, 0, p)), FT(new view_detail::RowDotRep<ET>(rows_, 1, p)),
-                FT(new view_detail::RowDotRep<ET>(rows_, 2, p))};
-      }
+      if (!view_.eye) return row_dots(p);
     return to_view(FT(p[0]), FT(p[1]), FT(p[2]));
   }
   // A model-space point given in the kernel's number type (a constructed point, on ExactKernel).
@@ -261,13 +235,7 @@ class ViewFrame {
   // kernels take it rounded, which is what makes them inexact.
   ViewPoint<K> to_view(const ExactKernel::Point_3& p) const {
     if constexpr (std::is_same_v<FT, ExactKernel::FT>) {
-      if (!view_.eye) {
-        using ET = ExactKernel::FT::Exact_type;
-        using view_detail::PointRowDotRep;
-        CGAL::Protect_FPU_rounding<true> protect;
-        return {FT(new PointRowDotRep<ET>(rows_, 0, p)), FT(new PointRowDotRep<ET>(rows_, 1, p)),
-                FT(new PointRowDotRep<ET>(rows_, 2, p))};
-      }
+      if (!view_.eye) return row_dots(p);
       return to_view(p.x(), p.y(), p.z());
     }
     else return to_view(Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
@@ -349,6 +317,13 @@ class ViewFrame {
   }
 
  private:
+  // An orthographic view point on the exact kernel: one RowDotRep per coordinate.
+  template <class Point>
+  ViewPoint<K> row_dots(const Point& p) const {
+    using Rep = view_detail::RowDotRep<ExactKernel::FT::Exact_type, Point>;
+    CGAL::Protect_FPU_rounding<true> protect;
+    return {FT(new Rep(rows_, 0, p)), FT(new Rep(rows_, 1, p)), FT(new Rep(rows_, 2, p))};
+  }
   static void cross(const FT a[3], const FT b[3], FT out[3]) {
     out[0] = a[1] * b[2] - a[2] * b[1];
     out[1] = a[2] * b[0] - a[0] * b[2];

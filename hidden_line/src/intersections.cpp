@@ -228,13 +228,13 @@ class TriangleChords {
   // (s_u w - s_w u) / (s_u - s_w) (plane_volume, in Mpzf: no gcd): one rational division per
   // coordinate.
   EK::Point_3 point(const End& e) {
-    const Vec3 &pu = e.recipe.u, &pw = e.recipe.w;
-    if (e.recipe.kind == ModelPointRecipe::Kind::input_point) return EK::Point_3(pu[0], pu[1], pu[2]);
+    const ModelPointRecipe& r = e.recipe;
+    const Vec3 &pu = r.u, &pw = r.w;
+    if (r.kind == ModelPointRecipe::Kind::input_point) return EK::Point_3(pu[0], pu[1], pu[2]);
     auto [it, added] = crossings_.try_emplace({edge_key(e.u, e.w), e.plane_id, e.mesh});
     if (added) {
       using Z = CGAL::Mpzf;
-      const auto& [kind, u, w, a, b, c] = e.recipe;
-      const Z su = plane_volume(a, b, c, pu), sw = plane_volume(a, b, c, pw);
+      const Z su = plane_volume(r.a, r.b, r.c, pu), sw = plane_volume(r.a, r.b, r.c, pw);
       const ET den = ET(su - sw);
       FT x[3];
       for (int k = 0; k < 3; ++k) x[k] = FT(ET(ET(su * Z(pw[k]) - sw * Z(pu[k])) / den));

@@ -97,17 +97,17 @@ int side_of_polygon(const Polygon<K>& polygon, const typename Geometry<K>::Point
 }
 
 template <class K>
-int side_of_polygon_on_line(const Polygon<K>& polygon, std::span<const int> corner_sides,
-                            const typename Geometry<K>::Point& q) {
+int side_of_polygon_on_line(const Contour<K>& outer, std::span<const Contour<K>* const> holes,
+                            std::span<const int> corner_sides, const typename Geometry<K>::Point& q) {
   const int* sides = corner_sides.data();
-  const int s = detail::side_of_contour(polygon.outer, q, sides);
+  const int s = detail::side_of_contour(outer, q, sides);
   if (s <= 0) return s;
-  sides += polygon.outer.size();
-  for (const auto& hole : polygon.holes) {
-    const int h = detail::side_of_contour(hole, q, sides);
+  sides += outer.size();
+  for (const Contour<K>* hole : holes) {
+    const int h = detail::side_of_contour(*hole, q, sides);
     if (h == 0) return 0;
     if (h > 0) return -1;
-    sides += hole.size();
+    sides += hole->size();
   }
   return 1;
 }

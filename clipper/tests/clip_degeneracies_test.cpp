@@ -400,11 +400,13 @@ TEST(SideOfPolygonOnLine, AgreesWithSideOfPolygon) {
     std::vector<int> sides;
     for (const Contour<K>* c = &polygon.outer; c; c = c == &polygon.outer && !polygon.holes.empty() ? &polygon.holes[0] : nullptr)
       for (const Pt& p : c->points) sides.push_back(G::orientation(a, b, p));
+    std::vector<const Contour<K>*> holes;
+    for (const auto& h : polygon.holes) holes.push_back(&h);
     for (int k = -8; k <= 16; ++k) {
       const G::FT t = G::FT(k) / G::FT(8);
       const Pt q = k == 0 ? a : k == 8 ? b : G::point(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
       const int expected = side_of_polygon(polygon, q);
-      ASSERT_EQ(side_of_polygon_on_line<K>(polygon, sides, q), expected) << "draw " << draw << ", t = " << k << "/8";
+      ASSERT_EQ(side_of_polygon_on_line<K>(polygon.outer, holes, sides, q), expected) << "draw " << draw << ", t = " << k << "/8";
       on_boundary += expected == 0;
     }
     for (std::size_t i = 0; i < polygon.outer.size(); ++i)

@@ -21,12 +21,17 @@
 
 namespace hlr::hidden_line::detail {
 
+template <class K>
+CGAL::Bbox_2 box_of(const clip::Contour<K>& c) {
+  CGAL::Bbox_2 box;
+  for (const auto& q : c.points) box += Geometry<K>::bbox(q);
+  return box;
+}
+
 // A polygon's box: its outer contour's (the holes lie inside it).
 template <class K>
 CGAL::Bbox_2 box_of(const clip::Polygon<K>& p) {
-  CGAL::Bbox_2 box;
-  for (const auto& q : p.outer.points) box += Geometry<K>::bbox(q);
-  return box;
+  return box_of(p.outer);
 }
 
 class LooseGrid {

@@ -142,8 +142,8 @@ struct PlainParams {
 // edges or passes through a corner. Decided on the ends' sides of two edges, without constructing
 // a crossing or locating the ends in the whole polygon.
 template <class K>
-std::optional<bool> segment_in_chord(const ImageLine<K>& line, const clip::Polygon<K>& polygon,
-                                     std::span<const int> sides) {
+std::optional<bool> segment_in_chord(const ImageLine<K>& line, const clip::Contour<K>& outer,
+                                     std::span<const clip::Contour<K>* const> holes, std::span<const int> sides) {
   using G = Geometry<K>;
   std::array<std::pair<const clip::Contour<K>*, std::size_t>, 2> crossed;  // contour, edge
   int crossings = 0;
@@ -161,9 +161,9 @@ std::optional<bool> segment_in_chord(const ImageLine<K>& line, const clip::Polyg
     offset += n;
     return true;
   };
-  if (!scan(polygon.outer)) return std::nullopt;
-  for (const auto& h : polygon.holes)
-    if (!scan(h)) return std::nullopt;
+  if (!scan(outer)) return std::nullopt;
+  for (const clip::Contour<K>* h : holes)
+    if (!scan(*h)) return std::nullopt;
   if (crossings != 2) return std::nullopt;
   bool inside = true;
   for (const auto& [c, i] : crossed) {
@@ -183,10 +183,12 @@ std::optional<bool> segment_in_chord(const ImageLine<K>& line, const clip::Polyg
 // on; `params` constructs those parameters (PlainParams, or the classifier's shared ones) and may
 // know corners on the line without arithmetic (`on_line`). `oriented`: the polygon is oriented as
 // the clipper's output, which lets segment_in_chord settle most segments with `unit`.
+// `hole_boxes`, the boxes of the polygon's holes (or none): with `unit`, a hole whose box misses
+// the segment's box neither crosses nor holds it, and is not looked at.
 template <class K, class Params>
 std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> inside_intervals(
     const ImageLine<K>& line, const clip::Polygon<K>& polygon, Params& params, bool closed, bool unit,
-    bool oriented = false) {
+    bool oriented = false, std::span<const CGAL::Bbox_2> hole_boxes = {}) {
   using G = Geometry<K>;
   using FT = typename G::FT;
   std::vector<FT> ts;
@@ -201,9 +203,7 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   };
   // The side of the line each corner lies on, contour after contour (the outer one first).
   std::vector<int> sides;
-  std::size_t corners = polygon.outer.size();
-  for (const auto& h : polygon.holes) corners += h.size();
-  sides.reserve(corners);
+  sides.reserve(polygon.outer.size());
   auto sides_of = [&](const clip::Contour<K>& c) {
     for (std::size_t i = 0; i < c.size(); ++i)
       sides.push_back(params.on_line(c, i) ? 0 : G::orientation(line.a, line.b, c.points[i]));
@@ -211,9 +211,17 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   sides_of(polygon.outer);
   // An outer contour wholly on one side of the line (no corner on it) keeps the polygon off it.
   if (std::all_of(sides.begin(), sides.end(), [&](int s) { return s == sides[0] && s != 0; })) return {};
-  for (const auto& h : polygon.holes) sides_of(h);
+  std::vector<const clip::Contour<K>*> holes;
+  holes.reserve(polygon.holes.size());
+  const bool all_holes = !unit || hole_boxes.empty();
+  const CGAL::Bbox_2 segment_box = all_holes ? CGAL::Bbox_2() : line.bbox();
+  for (std::size_t h = 0; h < polygon.holes.size(); ++h)
+    if (all_holes || CGAL::do_overlap(hole_boxes[h], segment_box)) {
+      holes.push_back(&polygon.holes[h]);
+      sides_of(polygon.holes[h]);
+    }
   if (unit && oriented)
-    if (const auto inside = segment_in_chord<K>(line, polygon, sides)) {
+    if (const auto inside = segment_in_chord<K>(line, polygon.outer, holes, sides)) {
       if (*inside) return {{FT(0), FT(1)}};
       return {};
     }
@@ -234,7 +242,7 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
     }
   };
   scan(polygon.outer);
-  for (const auto& h : polygon.holes) scan(h);
+  for (const clip::Contour<K>* h : holes) scan(*h);
   sort_unique(ts);
   std::vector<std::pair<FT, FT>> out;
   // A span that ends at the line's own end a (or b) meets no boundary inside, so it lies where
@@ -243,13 +251,14 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   auto end_side = [&](std::size_t i) {
     if (!unit) return 0;
     int side = 0;
-    if (i == 0) side = clip::side_of_polygon_on_line(polygon, sides, line.a);
-    if (side == 0 && i + 2 == ts.size()) side = clip::side_of_polygon_on_line(polygon, sides, line.b);
+    if (i == 0) side = clip::side_of_polygon_on_line<K>(polygon.outer, holes, sides, line.a);
+    if (side == 0 && i + 2 == ts.size()) side = clip::side_of_polygon_on_line<K>(polygon.outer, holes, sides, line.b);
     return side;
   };
   for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
     int side = end_side(i);
-    if (side == 0) side = clip::side_of_polygon_on_line(polygon, sides, line.at((ts[i] + ts[i + 1]) / 2));
+    if (side == 0)
+      side = clip::side_of_polygon_on_line<K>(polygon.outer, holes, sides, line.at((ts[i] + ts[i + 1]) / 2));
     if (closed ? side < 0 : side <= 0) continue;
     if (!out.empty() && out.back().second == ts[i]) out.back().second = ts[i + 1];
     else out.emplace_back(ts[i], ts[i + 1]);
@@ -307,7 +316,13 @@ class Classifier {
     }
     each_vertex_source([&](std::uint32_t m, std::uint32_t v, std::int32_t s) { vertex_sources_[m].sources[next[m][v]++] = s; });
     boxes_.reserve(covers_.size());
-    for (std::uint32_t i = 0; i < covers_.size(); ++i) grid_.insert(i, boxes_.emplace_back(box_of(*covers_[i].polygon)));
+    hole_box_start_.reserve(covers_.size() + 1);
+    for (std::uint32_t i = 0; i < covers_.size(); ++i) {
+      grid_.insert(i, boxes_.emplace_back(box_of(*covers_[i].polygon)));
+      hole_box_start_.push_back(std::uint32_t(hole_boxes_.size()));
+      for (const auto& h : covers_[i].polygon->holes) hole_boxes_.push_back(box_of(h));
+    }
+    hole_box_start_.push_back(std::uint32_t(hole_boxes_.size()));
     // Orthographic views on the exact kernel decide depths in model space, on the input doubles.
     if constexpr (G::exact_constructions)
       if (!frame.perspective()) {
@@ -512,7 +527,9 @@ class Classifier {
       if (line_misses_box<K>(line.a, line.b, boxes_[i])) return false;
       const bool nearer_all_along = depth.sign0 > 0 && depth.sign1 > 0;
       bool added = false;
-      for (const auto& [lo, hi] : inside_intervals(line, *cover.polygon, params, true, true, true)) {
+      const std::span<const CGAL::Bbox_2> hole_boxes(hole_boxes_.data() + hole_box_start_[i],
+                                                     hole_box_start_[i + 1] - hole_box_start_[i]);
+      for (const auto& [lo, hi] : inside_intervals(line, *cover.polygon, params, true, true, true, hole_boxes)) {
         occluders_.push_back({lo, hi, &depth});
         if (nearer_all_along) {
           whole.emplace_back(lo, hi);
@@ -621,6 +638,9 @@ class Classifier {
   };
   std::vector<VertexSources> vertex_sources_;
   std::vector<CGAL::Bbox_2> boxes_;  // of covers_' polygons
+  // The boxes of cover i's holes are hole_boxes_[hole_box_start_[i] .. hole_box_start_[i + 1]).
+  std::vector<CGAL::Bbox_2> hole_boxes_;
+  std::vector<std::uint32_t> hole_box_start_;
   std::vector<double> nearest_;      // nearest_depth of covers_' polygons
   LooseGrid grid_, edge_on_grid_;
 };

@@ -145,14 +145,15 @@ std::vector<Polygon<K>> merge_polygons(std::span<const Contour<K>> pieces, const
 template <class K>
 int side_of_polygon(const Polygon<K>& polygon, const typename Geometry<K>::Point& q);
 
-// side_of_polygon for a point q on a line, given the side of that line each corner lies on
-// (`corner_sides`, -1, 0 or +1, contour after contour, the outer one first). An edge whose two
-// corners lie on the line contains it, so q is collinear with that edge: known without the exact
-// arithmetic a constructed q would need there. Only on the exact kernel, where a point constructed
-// on the line lies on it; the other kernels decide every edge as side_of_polygon does.
+// side_of_polygon for a point q on a line, of the polygon bounded by `outer` and `holes` (all of
+// a polygon's holes, or those that may hold or touch q), given the side of that line each corner
+// lies on (`corner_sides`, -1, 0 or +1, contour after contour, the outer one first). An edge whose
+// two corners lie on the line contains it, so q is collinear with that edge: known without the
+// exact arithmetic a constructed q would need there. Only on the exact kernel, where a point
+// constructed on the line lies on it; the other kernels decide every edge as side_of_polygon does.
 template <class K>
-int side_of_polygon_on_line(const Polygon<K>& polygon, std::span<const int> corner_sides,
-                            const typename Geometry<K>::Point& q);
+int side_of_polygon_on_line(const Contour<K>& outer, std::span<const Contour<K>* const> holes,
+                            std::span<const int> corner_sides, const typename Geometry<K>::Point& q);
 
 // Exact signed area of a contour (twice the area, to stay in the ring of the coordinates) and of a
 // polygon (outer minus holes). Positive for a counter-clockwise contour.
@@ -172,7 +173,8 @@ typename Geometry<K>::FT twice_area(const Polygon<K>& polygon);
                                                           const ClipRegion<K>&);                     \
   EXTERN template std::vector<Polygon<K>> merge_polygons<K>(std::span<const Contour<K>>, const LineTable<K>&); \
   EXTERN template int side_of_polygon<K>(const Polygon<K>&, const Geometry<K>::Point&);               \
-  EXTERN template int side_of_polygon_on_line<K>(const Polygon<K>&, std::span<const int>, const Geometry<K>::Point&); \
+  EXTERN template int side_of_polygon_on_line<K>(const Contour<K>&, std::span<const Contour<K>* const>,     \
+                                                std::span<const int>, const Geometry<K>::Point&);              \
   EXTERN template Geometry<K>::FT twice_signed_area<K>(const Contour<K>&);                           \
   EXTERN template Geometry<K>::FT twice_area<K>(const Polygon<K>&);
 

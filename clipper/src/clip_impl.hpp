@@ -99,15 +99,15 @@ int side_of_polygon(const Polygon<K>& polygon, const typename Geometry<K>::Point
 template <class K>
 int side_of_polygon_on_line(const Contour<K>& outer, std::span<const Contour<K>* const> holes,
                             std::span<const int> corner_sides, const typename Geometry<K>::Point& q) {
-  const int* sides = corner_sides.data();
+  const int* sides = corner_sides.empty() ? nullptr : corner_sides.data();
   const int s = detail::side_of_contour(outer, q, sides);
   if (s <= 0) return s;
-  sides += outer.size();
+  if (sides) sides += outer.size();
   for (const Contour<K>* hole : holes) {
     const int h = detail::side_of_contour(*hole, q, sides);
     if (h == 0) return 0;
     if (h > 0) return -1;
-    sides += hole->size();
+    if (sides) sides += hole->size();
   }
   return 1;
 }

@@ -185,6 +185,8 @@ std::optional<bool> segment_in_chord(const ImageLine<K>& line, const clip::Conto
 // the clipper's output, which lets segment_in_chord settle most segments with `unit`.
 // `hole_boxes`, the boxes of the polygon's holes (or none): with `unit`, a hole whose box misses
 // the segment's box neither crosses nor holds it, and is not looked at.
+// The order of the tests is the classifier's: most segments it asks about lie wholly off the
+// polygon or wholly in it, and are told from their boxes and one end.
 template <class K, class Params>
 std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> inside_intervals(
     const ImageLine<K>& line, const clip::Polygon<K>& polygon, Params& params, bool closed, bool unit,
@@ -201,6 +203,28 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
     const int hi = line.along_x ? G::compare_x(p, line.b) : G::compare_y(p, line.b);
     return lo != 0 && lo == hi;
   };
+  const CGAL::Bbox_2 segment_box = unit ? line.bbox() : CGAL::Bbox_2();
+  std::vector<const clip::Contour<K>*> holes;
+  holes.reserve(polygon.holes.size());
+  for (std::size_t h = 0; h < polygon.holes.size(); ++h)
+    if (!unit || hole_boxes.empty() || CGAL::do_overlap(hole_boxes[h], segment_box)) holes.push_back(&polygon.holes[h]);
+  if (unit) {
+    // A segment whose box meets no edge's box lies wholly inside the polygon or wholly outside it,
+    // where its end a lies (off the boundary).
+    auto near = [&](const clip::Contour<K>* c) {
+      CGAL::Bbox_2 previous = G::bbox(c->points.back());
+      for (const auto& p : c->points) {
+        const CGAL::Bbox_2 here = G::bbox(p);
+        if (CGAL::do_overlap(previous + here, segment_box)) return true;
+        previous = here;
+      }
+      return false;
+    };
+    if (!near(&polygon.outer) && std::none_of(holes.begin(), holes.end(), near)) {
+      if (clip::side_of_polygon_on_line<K>(polygon.outer, holes, {}, line.a) > 0) return {{FT(0), FT(1)}};
+      return {};
+    }
+  }
   // The side of the line each corner lies on, contour after contour (the outer one first).
   std::vector<int> sides;
   sides.reserve(polygon.outer.size());
@@ -211,15 +235,7 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   sides_of(polygon.outer);
   // An outer contour wholly on one side of the line (no corner on it) keeps the polygon off it.
   if (std::all_of(sides.begin(), sides.end(), [&](int s) { return s == sides[0] && s != 0; })) return {};
-  std::vector<const clip::Contour<K>*> holes;
-  holes.reserve(polygon.holes.size());
-  const bool all_holes = !unit || hole_boxes.empty();
-  const CGAL::Bbox_2 segment_box = all_holes ? CGAL::Bbox_2() : line.bbox();
-  for (std::size_t h = 0; h < polygon.holes.size(); ++h)
-    if (all_holes || CGAL::do_overlap(hole_boxes[h], segment_box)) {
-      holes.push_back(&polygon.holes[h]);
-      sides_of(polygon.holes[h]);
-    }
+  for (const clip::Contour<K>* h : holes) sides_of(*h);
   if (unit && oriented)
     if (const auto inside = segment_in_chord<K>(line, polygon.outer, holes, sides)) {
       if (*inside) return {{FT(0), FT(1)}};

@@ -150,7 +150,8 @@ int side_of_polygon(const Polygon<K>& polygon, const typename Geometry<K>::Point
 // lies on (`corner_sides`, -1, 0 or +1, contour after contour, the outer one first). An edge whose
 // two corners lie on the line contains it, so q is collinear with that edge: known without the
 // exact arithmetic a constructed q would need there. Only on the exact kernel, where a point
-// constructed on the line lies on it; the other kernels decide every edge as side_of_polygon does.
+// constructed on the line lies on it; the other kernels, and empty `corner_sides`, decide every
+// edge as side_of_polygon does.
 template <class K>
 int side_of_polygon_on_line(const Contour<K>& outer, std::span<const Contour<K>* const> holes,
                             std::span<const int> corner_sides, const typename Geometry<K>::Point& q);

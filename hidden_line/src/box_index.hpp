@@ -44,6 +44,7 @@ class LooseGrid {
     while (levels_ < 11 && (std::size_t(1) << (2 * (levels_ - 1))) < expected) ++levels_;
     for (int l = 0; l < levels_; ++l) cells_.emplace_back(std::size_t(1) << (2 * l));
     filed_.assign(std::size_t(levels_), 0);
+    boxes_.reserve(expected);
     // A few ulps of the domain's coordinates: what rounding may move a box's centre by.
     slack_x_ = 1e-15 * (std::abs(domain_.xmin()) + std::abs(domain_.xmax()));
     slack_y_ = 1e-15 * (std::abs(domain_.ymin()) + std::abs(domain_.ymax()));

@@ -72,11 +72,16 @@ struct ImageLine {
   // On the exact kernel the line's own ends for t exactly 0 or 1, rather than constructions equal
   // to them.
   P at(const FT& t) const {
+    if (const int end = exact_end(t); end >= 0) return end == 0 ? a : b;
+    return G::point(G::x(a) + t * dx, G::y(a) + t * dy);
+  }
+  // 0 or 1 when t is known to be exactly that without arithmetic (exact kernel), else -1.
+  static int exact_end(const FT& t) {
     if constexpr (G::exact_constructions) {
       const auto [lo, hi] = G::interval(t);
-      if (lo == hi && (lo == 0 || lo == 1)) return lo == 0 ? a : b;
+      if (lo == hi && (lo == 0 || lo == 1)) return lo == 0 ? 0 : 1;
     }
-    return G::point(G::x(a) + t * dx, G::y(a) + t * dy);
+    return -1;
   }
   CGAL::Bbox_2 bbox() const { return G::bbox(a) + G::bbox(b); }
 };
@@ -686,9 +691,18 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
   tbb::enumerable_thread_specific<typename Classifier<K>::Scratch> scratch;
   std::size_t polls = 0;
   try {
+    // Every line's room taken at once: a vector grown by doubling keeps up to half of it unused
+    // until the drawing is made, where the run's memory peaks.
+    std::vector<std::vector<FeatureEdge>> edges;
+    std::size_t line_count = options.intersections ? intersections.size() : 0;
+    for (const Mesh& mesh : meshes) line_count += edges.emplace_back(feature_edges(mesh, frame.view(), options.features)).size();
+    out.lines.reserve(line_count);
+    owns.reserve(line_count);
+    segments.reserve(line_count);
+    if (options.intersections && !frame.perspective()) out.end_recipes.reserve(intersections.size());
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       const NearCut<K>& cut = sources.near_cuts[m];
-      for (const FeatureEdge& edge : feature_edges(meshes[m], frame.view(), options.features)) {
+      for (const FeatureEdge& edge : edges[m]) {
         options.stop.check_every(polls, 1024);
         // In perspective, the part in front of the near plane; an edge wholly behind it is not drawn.
         const auto ends = cut.edge_ends(edge.v0, edge.v1);
@@ -789,7 +803,13 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     bool visible;
     bool thin;
   };
-  std::vector<detail::ImageLine<K>> images;
+  // Each line's image ends; its parameters (detail::ImageLine) are made only for the lines that
+  // need them: a large drawing's lines are nearly all drawn whole, alone on their image line.
+  struct ImageEnds {
+    typename G::Point a, b;
+    CGAL::Bbox_2 bbox() const { return G::bbox(a) + G::bbox(b); }
+  };
+  std::vector<ImageEnds> images;
   images.reserve(lines.lines.size());
   std::vector<Span> spans;
   // One image point per mesh vertex: collinear lines that meet at a vertex then meet at one point
@@ -808,7 +828,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     if (!shared) shared = G::point(p.x, p.y);
     return *shared;
   };
-  for (const auto& l : lines.lines) images.emplace_back(image_point(l, l.a, l.v0), image_point(l, l.b, l.v1), l.a, l.b);
+  for (const auto& l : lines.lines) images.push_back({image_point(l, l.a, l.v0), image_point(l, l.b, l.v1)});
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
   // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
   for (int pass = 0; pass < 3; ++pass)
@@ -830,7 +850,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       const Vec3& d = lines.view_direction;
       return collinear_in_view(li.model_a, li.model_b, lj.model_a, d) && collinear_in_view(li.model_a, li.model_b, lj.model_b, d);
     }
-    const detail::ImageLine<K>&a = images[i], &b = images[j];
+    const ImageEnds &a = images[i], &b = images[j];
     return G::orientation(a.a, a.b, b.a) == 0 && G::orientation(a.a, a.b, b.b) == 0;
   };
 
@@ -953,9 +973,12 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     }
     for (std::uint32_t s : members) {
       const Span& span = spans[s];
-      const detail::ImageLine<K>& image = images[span.line];
+      const ImageEnds& ends = images[span.line];
       const FeatureLine<K>& line = lines.lines[span.line];
-      const auto a = image.at(span.t0), b = image.at(span.t1);
+      const int end0 = detail::ImageLine<K>::exact_end(span.t0), end1 = detail::ImageLine<K>::exact_end(span.t1);
+      std::optional<detail::ImageLine<K>> image;
+      if (!alone || end0 != 0 || end1 != 1) image.emplace(ends.a, ends.b, line.a, line.b);
+      const auto a = end0 == 0 ? ends.a : image->at(span.t0), b = end1 == 1 ? ends.b : image->at(span.t1);
       if (alone) {
         emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees, span.line, span.thin,
                                                 span.t0, span.t1});
@@ -968,7 +991,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
         // in floating point): each pair is asked again.
         if constexpr (!G::exact_constructions)
           if (!collinear_lines(span.line, drawn_line[i])) return;
-        FT lo = image.param(out[i].a), hi = image.param(out[i].b);
+        FT lo = image->param(out[i].a), hi = image->param(out[i].b);
         if (hi < lo) std::swap(lo, hi);
         lo = std::max(lo, span.t0);
         hi = std::min(hi, span.t1);
@@ -978,7 +1001,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       FT from = span.t0;
       bool at_start = true;  // from is span.t0, whose point is a
       auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
-        const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
+        const DrawnSegment<K> d{at_start ? a : image->at(t0), to_end ? b : image->at(t1), span.visible, line.mesh,
                                 line.meeting_degrees, span.line, span.thin, t0, t1};
         grid->insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
         out.push_back(d);

@@ -294,6 +294,10 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     out.image_points.push_back(std::move(p2));
     out.near_cuts.push_back(std::move(cut));
   }
+  // Grown by doubling, kept to the end of the run.
+  out.polygons.shrink_to_fit();
+  out.lines.shrink_to_fit();
+  out.line_origins.shrink_to_fit();
   out.stats.sources = out.polygons.size();
   return out;
 }

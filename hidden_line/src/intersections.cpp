@@ -204,10 +204,16 @@ class TriangleChords {
     for (int k = 0; k < 3; ++k) side[k] = plane(m.vertices[t[k]]);
     std::array<End, 2> out;
     int n = 0;
-    for (int k = 0; k < 3 && n < 2; ++k) {
-      const std::uint32_t u = t[k], w = t[(k + 1) % 3];
-      if (side[k] == 0) out[n++] = end_at_vertex(mesh, u);
-      else if (side[k] * side[(k + 1) % 3] < 0) out[n++] = end_at_crossing(mesh, u, w, a, b, c, plane_id);
+    {
+      CGAL::Protect_FPU_rounding<true> protect;  // for the intervals, after the exact sides
+      const std::array<I, 3> normal = interval_normal(a, b, c);
+      std::array<I, 3> volume;  // of the corners against the plane
+      for (int k = 0; k < 3; ++k) volume[k] = interval_volume(a, normal, m.vertices[t[k]]);
+      for (int k = 0; k < 3 && n < 2; ++k) {
+        const int l = (k + 1) % 3;
+        if (side[k] == 0) out[n++] = end_at_vertex(mesh, t[k]);
+        else if (side[k] * side[l] < 0) out[n++] = end_at_crossing(mesh, t[k], t[l], volume[k], volume[l], a, b, c, plane_id);
+      }
     }
     if (n != 2) throw std::logic_error("a triangle straddling a plane did not meet it in two points");
     if (compare(out[1], out[0]) == CGAL::SMALLER) std::swap(out[0], out[1]);
@@ -248,23 +254,26 @@ class TriangleChords {
     const Vec3& p = meshes_[mesh].vertices[u];
     return {{ModelPointRecipe::Kind::input_point, p}, mesh, u, u, 0, {I(p[0]), I(p[1]), I(p[2])}};
   }
-  // u + t (w - u) with t = s_u / (s_u - s_w), s the volumes against the plane.
-  End end_at_crossing(std::uint32_t mesh, std::uint32_t u, std::uint32_t w, const Vec3& a, const Vec3& b,
-                      const Vec3& c, std::uint64_t plane_id) const {
+  // u + t (w - u) with t = s_u / (s_u - s_w), s the volumes against the plane (under upward
+  // rounding).
+  End end_at_crossing(std::uint32_t mesh, std::uint32_t u, std::uint32_t w, const I& su, const I& sw,
+                      const Vec3& a, const Vec3& b, const Vec3& c, std::uint64_t plane_id) const {
     const Vec3 &pu = meshes_[mesh].vertices[u], &pw = meshes_[mesh].vertices[w];
-    CGAL::Protect_FPU_rounding<true> protect;
-    const I su = volume(a, b, c, pu), sw = volume(a, b, c, pw), den = su - sw;
+    const I den = su - sw;
     std::array<I, 3> at;
     for (int j = 0; j < 3; ++j) at[j] = (su * I(pw[j]) - sw * I(pu[j])) / den;
     return {{ModelPointRecipe::Kind::edge_crossing, pu, pw, a, b, c}, mesh, u, w, plane_id, at};
   }
 
-  // (p - a) . ((b - a) x (c - a)) on intervals (under upward rounding).
-  static I volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+  // (b - a) x (c - a), and (p - a) . n with n that, on intervals (under upward rounding): the
+  // volume (p - a) . ((b - a) x (c - a)), the normal computed once per plane.
+  static std::array<I, 3> interval_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
     const I ux = I(b[0]) - a[0], uy = I(b[1]) - a[1], uz = I(b[2]) - a[2];
     const I vx = I(c[0]) - a[0], vy = I(c[1]) - a[1], vz = I(c[2]) - a[2];
-    const I wx = I(p[0]) - a[0], wy = I(p[1]) - a[1], wz = I(p[2]) - a[2];
-    return wx * (uy * vz - uz * vy) + wy * (uz * vx - ux * vz) + wz * (ux * vy - uy * vx);
+    return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+  }
+  static I interval_volume(const Vec3& a, const std::array<I, 3>& normal, const Vec3& p) {
+    return (I(p[0]) - a[0]) * normal[0] + (I(p[1]) - a[1]) * normal[1] + (I(p[2]) - a[2]) * normal[2];
   }
 
   const std::vector<Mesh>& meshes_;

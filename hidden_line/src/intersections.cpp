@@ -231,7 +231,7 @@ class TriangleChords {
   }
 
   // The end as an exact point; one crossing of an edge with a plane is built once per chunk, as
-  // (s_u w - s_w u) / (s_u - s_w) (plane_volume, in Mpzf: no gcd): one rational division per
+  // (s_u w - s_w u) / (s_u - s_w) (edge_volumes, in Mpzf: no gcd): one rational division per
   // coordinate.
   EK::Point_3 point(const End& e) {
     const ModelPointRecipe& r = e.recipe;
@@ -240,7 +240,7 @@ class TriangleChords {
     auto [it, added] = crossings_.try_emplace({edge_key(e.u, e.w), e.plane_id, e.mesh});
     if (added) {
       using Z = CGAL::Mpzf;
-      const Z su = plane_volume(r.a, r.b, r.c, pu), sw = plane_volume(r.a, r.b, r.c, pw);
+      const auto [su, sw] = edge_volumes(r);
       const ET den = ET(su - sw);
       FT x[3];
       for (int k = 0; k < 3; ++k) x[k] = FT(ET(ET(su * Z(pw[k]) - sw * Z(pu[k])) / den));

@@ -30,20 +30,23 @@ struct ModelPointRecipe {
   Vec3 a{}, b{}, c{};  // ... where it crosses the plane through these (not collinear)
 };
 
-// (p − a)·((b − a) × (c − a)), exactly.
-inline CGAL::Mpzf plane_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+// The signed volumes (p − a)·((b − a) × (c − a)) of the points p of an edge u w against the plane
+// through a, b, c, exactly; the plane's normal is made once for both.
+inline std::array<CGAL::Mpzf, 2> edge_volumes(const ModelPointRecipe& r) {
   using Z = CGAL::Mpzf;
+  const Vec3 &a = r.a, &b = r.b, &c = r.c;
   const Z ux = Z(b[0]) - Z(a[0]), uy = Z(b[1]) - Z(a[1]), uz = Z(b[2]) - Z(a[2]);
   const Z vx = Z(c[0]) - Z(a[0]), vy = Z(c[1]) - Z(a[1]), vz = Z(c[2]) - Z(a[2]);
-  const Z wx = Z(p[0]) - Z(a[0]), wy = Z(p[1]) - Z(a[1]), wz = Z(p[2]) - Z(a[2]);
-  return wx * (uy * vz - uz * vy) + wy * (uz * vx - ux * vz) + wz * (ux * vy - uy * vx);
+  const Z nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  auto volume = [&](const Vec3& p) { return (Z(p[0]) - Z(a[0])) * nx + (Z(p[1]) - Z(a[1])) * ny + (Z(p[2]) - Z(a[2])) * nz; };
+  return {volume(r.u), volume(r.w)};
 }
 
 // The point as numerators and a common denominator: p = (n[0], n[1], n[2]) / n[3].
 inline std::array<CGAL::Mpzf, 4> homogeneous(const ModelPointRecipe& r) {
   using Z = CGAL::Mpzf;
   if (r.kind == ModelPointRecipe::Kind::input_point) return {Z(r.u[0]), Z(r.u[1]), Z(r.u[2]), Z(1)};
-  const Z su = plane_volume(r.a, r.b, r.c, r.u), sw = plane_volume(r.a, r.b, r.c, r.w);
+  const auto [su, sw] = edge_volumes(r);
   std::array<Z, 4> n;
   for (int k = 0; k < 3; ++k) n[k] = su * Z(r.w[k]) - sw * Z(r.u[k]);
   n[3] = su - sw;

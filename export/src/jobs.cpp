@@ -106,7 +106,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   times.lines = seconds_since(mark);
   check();
   mark = std::chrono::steady_clock::now();
-  solution->segments = hidden_line::drawing_segments<K>(solution->lines, progress.stop);
+  solution->segments = hidden_line::drawing_segments<K>(solution->lines, progress.stop, &solution->sources.image_points);
   times.precedence = seconds_since(mark);
   std::vector<DrawingArea> shadows;
   // Shadow polygons are projected into the view without a near plane: orthographic views only.

@@ -794,7 +794,8 @@ LineSet<K> classify_lines(const std::vector<Mesh>& meshes, const ViewFrame<K>& f
 }
 
 template <class K>
-std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken stop) {
+std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken stop,
+                                              const std::vector<std::vector<typename Geometry<K>::Point>>* vertex_images) {
   using G = Geometry<K>;
   using FT = typename G::FT;
   struct Span {
@@ -809,26 +810,39 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     typename G::Point a, b;
     CGAL::Bbox_2 bbox() const { return G::bbox(a) + G::bbox(b); }
   };
-  std::vector<ImageEnds> images;
-  images.reserve(lines.lines.size());
+  const std::size_t n = lines.lines.size();
+  std::vector<ImageEnds> images(n);
   std::vector<Span> spans;
   // One image point per mesh vertex: collinear lines that meet at a vertex then meet at one point
   // (G::identity), and the spans' overlaps there need no exact comparison (ImageLine::param).
-  std::vector<std::uint32_t> vertex_count;
-  for (const auto& l : lines.lines)
-    if (l.has_model_ends) {
-      if (vertex_count.size() <= l.mesh) vertex_count.resize(l.mesh + 1, 0);
-      vertex_count[l.mesh] = std::max({vertex_count[l.mesh], l.v0 + 1, l.v1 + 1});
+  // The sources' points (`vertex_images`), or made here once per vertex.
+  if (vertex_images) {
+    parallel_chunks(n, 4096, [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const FeatureLine<K>& l = lines.lines[i];
+        const auto& points = (*vertex_images)[l.mesh];
+        images[i] = l.has_model_ends ? ImageEnds{points[l.v0], points[l.v1]}
+                                     : ImageEnds{G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y)};
+      }
+    });
+  } else {
+    std::vector<std::vector<std::optional<typename G::Point>>> vertex_points;
+    for (const auto& l : lines.lines)
+      if (l.has_model_ends) {
+        if (vertex_points.size() <= l.mesh) vertex_points.resize(l.mesh + 1);
+        if (vertex_points[l.mesh].size() <= std::max(l.v0, l.v1)) vertex_points[l.mesh].resize(std::max(l.v0, l.v1) + 1);
+      }
+    auto image_point = [&](const FeatureLine<K>& l, const ViewPoint<K>& p, std::uint32_t v) {
+      if (!l.has_model_ends) return G::point(p.x, p.y);
+      std::optional<typename G::Point>& shared = vertex_points[l.mesh][v];
+      if (!shared) shared = G::point(p.x, p.y);
+      return *shared;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      const FeatureLine<K>& l = lines.lines[i];
+      images[i] = {image_point(l, l.a, l.v0), image_point(l, l.b, l.v1)};
     }
-  std::vector<std::vector<std::optional<typename G::Point>>> vertex_points(vertex_count.size());
-  for (std::size_t m = 0; m < vertex_count.size(); ++m) vertex_points[m].resize(vertex_count[m]);
-  auto image_point = [&](const FeatureLine<K>& l, const ViewPoint<K>& p, std::uint32_t v) {
-    if (!l.has_model_ends) return G::point(p.x, p.y);
-    std::optional<typename G::Point>& shared = vertex_points[l.mesh][v];
-    if (!shared) shared = G::point(p.x, p.y);
-    return *shared;
-  };
-  for (const auto& l : lines.lines) images.push_back({image_point(l, l.a, l.v0), image_point(l, l.b, l.v1)});
+  }
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
   // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
   for (int pass = 0; pass < 3; ++pass)
@@ -859,7 +873,6 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // and lines joined by such pairs all lie on one image line (collinearity is exact, so
   // transitive): each such group is solved on its own, in parallel, and the segments gathered in
   // span order are those of one pass over all spans, for any number of threads.
-  const std::size_t n = lines.lines.size();
   // A candidate filter in double (it decides nothing): each line's unit direction from the
   // centres of its ends' interval boxes, and a bound on that direction's error. Two lines whose
   // directions' cross product exceeds both bounds are certainly not parallel, so not collinear.
@@ -873,11 +886,10 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // the ends of the angle range also at the other end, with the offset negated: the same line
   // seen the other way). Lines whose direction is too uncertain go by their boxes.
   std::vector<CGAL::Bbox_2> keys(n);
-  std::vector<std::uint32_t> uncertain;
-  CGAL::Bbox_2 box_domain, key_domain;
+  std::vector<char> is_uncertain(n, 0);
   constexpr double kHalfTurn = std::numbers::pi;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (lines.lines[i].pieces.empty()) continue;
+  auto file = [&](std::uint32_t i) {
+    if (lines.lines[i].pieces.empty()) return;
     const CGAL::Bbox_2 a = G::bbox(images[i].a), b = G::bbox(images[i].b);
     const double dx = (b.xmin() + b.xmax() - a.xmin() - a.xmax()) / 2, dy = (b.ymin() + b.ymax() - a.ymin() - a.ymax()) / 2;
     const double length = std::hypot(dx, dy);
@@ -887,9 +899,8 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     const double spread = (a.xmax() - a.xmin()) + (a.ymax() - a.ymin()) + (b.xmax() - b.xmin()) + (b.ymax() - b.ymin()) +
                           1e-15 * magnitude;
     if (!(length > 0 && std::isfinite(length) && spread < 1e-3 * length)) {
-      uncertain.push_back(i);
-      box_domain += images[i].bbox();
-      continue;
+      is_uncertain[i] = 1;
+      return;
     }
     const Direction& u = directions[i] = {dx / length, dy / length, 4 * spread / length + 1e-12};
     // The direction within `error` of the true one turns by less than twice that; the offset
@@ -899,7 +910,19 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     const double angle = std::atan2(sign * u.y, sign * u.x), offset = sign * (u.x * py - u.y * px);
     const double angle_error = 2 * u.error, offset_error = 2 * (u.error * size + spread) + 1e-14 * size;
     keys[i] = CGAL::Bbox_2(angle - angle_error, offset - offset_error, angle + angle_error, offset + offset_error);
-    key_domain += keys[i];
+  };
+  parallel_chunks(n, 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) file(std::uint32_t(i));
+  });
+  std::vector<std::uint32_t> uncertain;
+  CGAL::Bbox_2 box_domain, key_domain;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (is_uncertain[i]) {
+      uncertain.push_back(i);
+      box_domain += images[i].bbox();
+    } else if (directions[i].error != HUGE_VAL) {
+      key_domain += keys[i];
+    }
   }
   auto mirrored = [&](const CGAL::Bbox_2& k) {  // the key of the same line seen the other way
     const double shift = k.xmax() > kHalfTurn / 2 ? -kHalfTurn : kHalfTurn;

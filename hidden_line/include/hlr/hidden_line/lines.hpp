@@ -127,8 +127,11 @@ struct DrawnSegment {
   typename Geometry<K>::FT t0, t1;  // where a and b lie along the line (FeatureLine's a + t (b - a))
 };
 
+// `vertex_images`: the mesh vertices' image points (Sources::image_points of the same view), which
+// the drawing then shares instead of making its own.
 template <class K>
-std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken stop = {});
+std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken stop = {},
+                                              const std::vector<std::vector<typename Geometry<K>::Point>>* vertex_images = nullptr);
 
 #define HLR_HIDDEN_LINE_LINES_DECLARE(K, EXTERN)                                                         \
   EXTERN template LineSet<K> classify_lines<K>(const std::vector<Mesh>&, const ViewFrame<K>&, const Sources<K>&, \
@@ -136,7 +139,8 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
                                               const LineOptions&);                                           \
   EXTERN template LineSet<K> classify_lines<K>(const std::vector<Mesh>&, const ViewFrame<K>&, const Sources<K>&, \
                                               const std::vector<IntersectionSegment>&, const LineOptions&);     \
-  EXTERN template std::vector<DrawnSegment<K>> drawing_segments<K>(const LineSet<K>&, StopToken);
+  EXTERN template std::vector<DrawnSegment<K>> drawing_segments<K>(                                    \
+      const LineSet<K>&, StopToken, const std::vector<std::vector<Geometry<K>::Point>>*);
 
 HLR_HIDDEN_LINE_LINES_DECLARE(ExactKernel, extern)
 HLR_HIDDEN_LINE_LINES_DECLARE(EpickKernel, extern)

@@ -105,6 +105,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
                                                             intersections.segments(), line_options(options));
   times.lines = seconds_since(mark);
   check();
+  progress.report("drawing coincident pieces once (ISO 128 precedence)");
   mark = std::chrono::steady_clock::now();
   solution->segments = hidden_line::drawing_segments<K>(solution->lines, progress.stop, &solution->sources.image_points);
   times.precedence = seconds_since(mark);

@@ -40,10 +40,11 @@ TEST(Jobs, DrawLinesReportsItsStagesInOrder) {
   const LineDrawing drawing = draw_lines(scene, iso(), options);
   EXPECT_GT(drawing.stats.lines, 0u);
   // No sort: a drawing's lines are classified against the polygons themselves.
-  ASSERT_EQ(stages.size(), 3u);
+  ASSERT_EQ(stages.size(), 4u);
   EXPECT_EQ(stages[0], "finding where faces penetrate");
   EXPECT_NE(stages[1].find("building polygons (exact)"), std::string::npos);
   EXPECT_EQ(stages[2], "classifying feature lines");
+  EXPECT_EQ(stages[3], "drawing coincident pieces once (ISO 128 precedence)");
 }
 
 TEST(Jobs, DrawLinesStopsWhenAskedBetweenStages) {

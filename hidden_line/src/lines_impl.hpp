@@ -677,12 +677,16 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
   LineSet<K> out;
   std::vector<std::vector<std::int32_t>> owns;
   std::vector<const IntersectionSegment*> segments;  // per line: its intersection segment, or null
-  auto add = [&](FeatureLine<K> line, std::initializer_list<std::pair<std::uint32_t, const std::vector<std::uint32_t>*>> sides) {
+  using Sides = std::initializer_list<std::pair<std::uint32_t, const std::vector<std::uint32_t>*>>;
+  auto own_sources = [&](Sides sides) {
     std::vector<std::int32_t> own;
     for (const auto& [mesh, faces] : sides)
       for (std::uint32_t f : *faces)
         if (const std::int32_t s = classifier.source_of_face(mesh, f); s >= 0) own.push_back(s);
     std::sort(own.begin(), own.end());
+    return own;
+  };
+  auto add = [&](FeatureLine<K> line, std::vector<std::int32_t> own) {
     out.lines.push_back(std::move(line));
     owns.push_back(std::move(own));
     segments.push_back(nullptr);
@@ -717,13 +721,24 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         line.has_model_ends = (*ends)[0] == edge.v0 && (*ends)[1] == edge.v1;
         line.model_a = meshes[m].vertices[edge.v0];
         line.model_b = meshes[m].vertices[edge.v1];
-        add(std::move(line), {{m, &edge.faces}});
+        add(std::move(line), own_sources({{m, &edge.faces}}));
       }
     }
     if (options.intersections) {
-      for (const IntersectionSegment& s : intersections) {
-        options.stop.check_every(polls, 1024);
-        const auto ends = frame.to_view_clipped(s.a, s.b);
+      // Each segment's ends in view coordinates and its sources, side by side; then the lines in order.
+      std::vector<std::optional<std::pair<ViewPoint<K>, ViewPoint<K>>>> view_ends(intersections.size());
+      std::vector<std::vector<std::int32_t>> segment_owns(intersections.size());
+      parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
+        options.stop.check();
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          const IntersectionSegment& s = intersections[i];
+          view_ends[i] = frame.to_view_clipped(s.a, s.b);
+          if (view_ends[i]) segment_owns[i] = own_sources({{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
+        }
+      });
+      for (std::size_t i = 0; i < intersections.size(); ++i) {
+        const IntersectionSegment& s = intersections[i];
+        const auto& ends = view_ends[i];
         if (!ends) continue;
         FeatureLine<K> line;
         line.a = ends->first;
@@ -735,7 +750,7 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
           line.end_recipes = std::uint32_t(out.end_recipes.size());
           out.end_recipes.push_back({s.recipe_a, s.recipe_b});
         }
-        add(std::move(line), {{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
+        add(std::move(line), std::move(segment_owns[i]));
         segments.back() = &s;
       }
     }

@@ -20,7 +20,6 @@
 #include <tbb/parallel_sort.h>
 
 #include <bit>
-#include <cstring>
 
 namespace hlr::exporter {
 

@@ -226,9 +226,10 @@ MergedSegments write_lines_json_merging(LineDrawing& drawing, const DrawingStyle
   constexpr std::size_t kSegmentsBeside = 20000;
   if (drawing.segments.size() < kSegmentsBeside ||
       tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) < 2) {
-    merge();
-    record();
-    write_document(drawing, sink, write_seconds, {});
+    write_document(drawing, sink, write_seconds, [&] {
+      merge();
+      record();
+    });
     return merged;
   }
   tbb::task_group beside;

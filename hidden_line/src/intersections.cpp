@@ -265,8 +265,8 @@ class TriangleChords {
     return {{ModelPointRecipe::Kind::edge_crossing, pu, pw, a, b, c}, mesh, u, w, plane_id, at};
   }
 
-  // (b - a) x (c - a), and (p - a) . n with n that, on intervals (under upward rounding): the
-  // volume (p - a) . ((b - a) x (c - a)), the normal computed once per plane.
+  // On intervals (under upward rounding): the plane's normal (b - a) x (c - a), made once per
+  // plane, and the volume (p - a) . normal of a point against it.
   static std::array<I, 3> interval_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
     const I ux = I(b[0]) - a[0], uy = I(b[1]) - a[1], uz = I(b[2]) - a[2];
     const I vx = I(c[0]) - a[0], vy = I(c[1]) - a[1], vz = I(c[2]) - a[2];

@@ -830,34 +830,31 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   std::vector<Span> spans;
   // One image point per mesh vertex: collinear lines that meet at a vertex then meet at one point
   // (G::identity), and the spans' overlaps there need no exact comparison (ImageLine::param).
-  // The sources' points (`vertex_images`), or made here once per vertex.
-  if (vertex_images) {
-    parallel_chunks(n, 4096, [&](const auto& range) {
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        const FeatureLine<K>& l = lines.lines[i];
-        const auto& points = (*vertex_images)[l.mesh];
-        images[i] = l.has_model_ends ? ImageEnds{points[l.v0], points[l.v1]}
-                                     : ImageEnds{G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y)};
-      }
-    });
-  } else {
-    std::vector<std::vector<std::optional<typename G::Point>>> vertex_points;
-    for (const auto& l : lines.lines)
-      if (l.has_model_ends) {
-        if (vertex_points.size() <= l.mesh) vertex_points.resize(l.mesh + 1);
-        if (vertex_points[l.mesh].size() <= std::max(l.v0, l.v1)) vertex_points[l.mesh].resize(std::max(l.v0, l.v1) + 1);
-      }
-    auto image_point = [&](const FeatureLine<K>& l, const ViewPoint<K>& p, std::uint32_t v) {
-      if (!l.has_model_ends) return G::point(p.x, p.y);
-      std::optional<typename G::Point>& shared = vertex_points[l.mesh][v];
-      if (!shared) shared = G::point(p.x, p.y);
-      return *shared;
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-      const FeatureLine<K>& l = lines.lines[i];
-      images[i] = {image_point(l, l.a, l.v0), image_point(l, l.b, l.v1)};
+  // The sources' points (`vertex_images`), or without them made here, once per vertex.
+  std::vector<std::vector<typename G::Point>> own_images;
+  if (!vertex_images) {
+    std::vector<std::vector<char>> made;
+    for (const auto& l : lines.lines) {
+      if (!l.has_model_ends) continue;
+      if (own_images.size() <= l.mesh) own_images.resize(l.mesh + 1), made.resize(l.mesh + 1);
+      auto &points = own_images[l.mesh], &done = made[l.mesh];
+      if (points.size() <= std::max(l.v0, l.v1)) points.resize(std::max(l.v0, l.v1) + 1), done.resize(points.size());
+      for (const auto& [v, p] : {std::pair{l.v0, &l.a}, std::pair{l.v1, &l.b}})
+        if (!done[v]) points[v] = G::point(p->x, p->y), done[v] = 1;
     }
+    vertex_images = &own_images;
   }
+  parallel_chunks(n, 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const FeatureLine<K>& l = lines.lines[i];
+      if (l.has_model_ends) {
+        const auto& points = (*vertex_images)[l.mesh];
+        images[i] = {points[l.v0], points[l.v1]};
+      } else {
+        images[i] = {G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y)};
+      }
+    }
+  });
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
   // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
   for (int pass = 0; pass < 3; ++pass)

@@ -177,6 +177,33 @@ CGAL::Comparison_result compare_points(const EK::Point_3& a, const EK::Point_3& 
 // precedence of lines, their classification) evaluates a leaf, not a chain of plane, line and
 // interval constructions. A crossing shared by the triangles on both sides of an edge is built
 // once per plane, so that the two are one point.
+// A crossing of an edge u w with a plane (its recipe) as a lazy exact point: the intervals that
+// TriangleChords works out now, the exact (s_u w - s_w u) / (s_u - s_w) (edge_volumes, in Mpzf: no
+// gcd; one rational division per coordinate) only when a predicate needs it, which few do.
+class CrossingRep final
+    : public CGAL::Lazy_rep<EK::Approximate_kernel::Point_3, EK::Exact_kernel::Point_3, EK::E2A> {
+ public:
+  using Base = CGAL::Lazy_rep<EK::Approximate_kernel::Point_3, EK::Exact_kernel::Point_3, EK::E2A>;
+  CrossingRep(const ModelPointRecipe& recipe, const std::array<CGAL::Interval_nt<false>, 3>& at)
+      : Base(EK::Approximate_kernel::Point_3(at[0], at[1], at[2])), recipe_(recipe) {}
+
+  void update_exact() const override {
+    using Z = CGAL::Mpzf;
+    using ET = EK::Exact_kernel::FT;
+    const Vec3 &pu = recipe_.u, &pw = recipe_.w;
+    const auto [su, sw] = edge_volumes(recipe_);
+    const ET den = ET(su - sw);
+    ET x[3];
+    for (int k = 0; k < 3; ++k) x[k] = ET(ET(su * Z(pw[k]) - sw * Z(pu[k])) / den);
+    auto* exact = new EK::Exact_kernel::Point_3(x[0], x[1], x[2]);
+    this->set_at(exact);
+    this->set_ptr(exact);
+  }
+
+ private:
+  ModelPointRecipe recipe_;
+};
+
 class TriangleChords {
  public:
   using ET = FT::Exact_type;
@@ -238,14 +265,7 @@ class TriangleChords {
     const Vec3 &pu = r.u, &pw = r.w;
     if (r.kind == ModelPointRecipe::Kind::input_point) return EK::Point_3(pu[0], pu[1], pu[2]);
     auto [it, added] = crossings_.try_emplace({edge_key(e.u, e.w), e.plane_id, e.mesh});
-    if (added) {
-      using Z = CGAL::Mpzf;
-      const auto [su, sw] = edge_volumes(r);
-      const ET den = ET(su - sw);
-      FT x[3];
-      for (int k = 0; k < 3; ++k) x[k] = FT(ET(ET(su * Z(pw[k]) - sw * Z(pu[k])) / den));
-      it->second = EK::Point_3(x[0], x[1], x[2]);
-    }
+    if (added) it->second = EK::Point_3(EK::Point_3::Rep(new CrossingRep(r, e.at)));
     return it->second;
   }
 

@@ -25,8 +25,7 @@ hidden_line::LineOptions line_options(const DrawOptions& options) {
 }
 
 // Frees, on every thread, what only the line classification reads: the later stages need the
-// vertices' image points alone. They then grow into pages already touched, which costs less than
-// fresh ones, and the peak is lower.
+// vertices' image points alone.
 template <class K>
 void release_all_but_image_points(hidden_line::Sources<K>& sources) {
   auto& polygons = sources.polygons;
@@ -61,7 +60,7 @@ struct Solution {
 
 template <class K>
 LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections& intersections,
-                  const DrawOptions& options) {
+                  SceneIntersections* own_intersections, const DrawOptions& options) {
   using hidden_line::seconds_since;
   const Progress& progress = options.progress;
   const ViewFrame<K> frame(view, scene.meshes);
@@ -119,7 +118,10 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
                                                             intersections.segments(), line_options(options))
                            : hidden_line::classify_lines<K>(scene.meshes, frame, solution->sources,
                                                             intersections.segments(), line_options(options));
-  if (!sorted) release_all_but_image_points(solution->sources);  // its cost in the lines stage
+  // What the later stages do not read is freed (its cost in the lines stage): they grow into pages
+  // already touched, which costs less than fresh ones, and the peak is lower.
+  if (!sorted) release_all_but_image_points(solution->sources);
+  if (own_intersections) own_intersections->release();
   times.lines = seconds_since(mark);
   check();
   progress.report("drawing coincident pieces once (ISO 128 precedence)");
@@ -187,7 +189,7 @@ LineDrawing draw_lines(const Scene& scene, const View& view, const DrawOptions& 
   const SceneIntersections& intersections = intersections_of(scene, options, shared, own);
   try {
     return with_kernel(options.kernel,
-                       [&]<class K>(KernelKind) { return solve<K>(scene, view, intersections, options); });
+                       [&]<class K>(KernelKind) { return solve<K>(scene, view, intersections, own.get(), options); });
   } catch (const clip::ClipError& e) {
     if (options.kernel == KernelKind::exact) throw;
     throw hidden_line::inexact_kernel_failure(scene, options.kernel, e);

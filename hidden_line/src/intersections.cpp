@@ -257,15 +257,15 @@ class TriangleChords {
     return CGAL::EQUAL;  // equal doubles
   }
 
-  // The end as an exact point; one crossing of an edge with a plane is built once per chunk, as
-  // (s_u w - s_w u) / (s_u - s_w) (edge_volumes, in Mpzf: no gcd): one rational division per
-  // coordinate.
+  // The end as an exact point (a CrossingRep for a crossing), one per chunk for each input vertex
+  // and each crossing of an edge with a plane: ends that are one point are one lazy point.
   EK::Point_3 point(const End& e) {
     const ModelPointRecipe& r = e.recipe;
-    const Vec3 &pu = r.u, &pw = r.w;
-    if (r.kind == ModelPointRecipe::Kind::input_point) return EK::Point_3(pu[0], pu[1], pu[2]);
-    auto [it, added] = crossings_.try_emplace({edge_key(e.u, e.w), e.plane_id, e.mesh});
-    if (added) it->second = EK::Point_3(EK::Point_3::Rep(new CrossingRep(r, e.at)));
+    const bool vertex = r.kind == ModelPointRecipe::Kind::input_point;
+    // A vertex's key has u = w and plane 0, which no crossing's has (its edge has two ends).
+    auto [it, added] = crossings_.try_emplace({edge_key(e.u, e.w), vertex ? 0 : e.plane_id, e.mesh});
+    if (added)
+      it->second = vertex ? EK::Point_3(r.u[0], r.u[1], r.u[2]) : EK::Point_3(EK::Point_3::Rep(new CrossingRep(r, e.at)));
     return it->second;
   }
 

@@ -1,6 +1,7 @@
 // The hidden-surface job of a view (jobs.hpp), for each kernel. The stages themselves are
 // instantiated in instantiate_<kernel>.cpp: this file only chains them.
 #include <hlr/hidden_line/jobs.hpp>
+#include <hlr/hidden_line/parallel.hpp>
 
 namespace hlr::hidden_line {
 
@@ -14,6 +15,13 @@ const std::vector<IntersectionSegment>& SceneIntersections::segments() const {
   });
   found_ = true;
   return segments_;
+}
+
+void SceneIntersections::release() {
+  parallel_chunks(segments_.size(), 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) segments_[i] = {};
+  });
+  std::vector<IntersectionSegment>().swap(segments_);
 }
 
 UserError inexact_kernel_failure(const Scene& scene, KernelKind kind, const std::exception& e) {

@@ -23,6 +23,7 @@
 #include "box_index.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -666,6 +667,36 @@ class Classifier {
   LooseGrid grid_, edge_on_grid_;
 };
 
+// The view points of the segments' ends in an orthographic view, 2 i + e for end e of segment i:
+// ends that are one lazy point (the same id) share one view point.
+template <class K>
+std::vector<ViewPoint<K>> view_points_of_ends(const ViewFrame<K>& frame,
+                                             const std::vector<IntersectionSegment>& segments, const StopToken& stop) {
+  std::vector<std::pair<std::size_t, std::uint32_t>> ends(2 * segments.size());  // (point id, end)
+  parallel_chunks(segments.size(), 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      ends[2 * i] = {segments[i].a.id(), std::uint32_t(2 * i)};
+      ends[2 * i + 1] = {segments[i].b.id(), std::uint32_t(2 * i + 1)};
+    }
+  });
+  tbb::parallel_sort(ends.begin(), ends.end());
+  std::vector<std::size_t> firsts;  // where each run of one id starts in `ends`
+  for (std::size_t k = 0; k < ends.size(); ++k)
+    if (k == 0 || ends[k].first != ends[k - 1].first) firsts.push_back(k);
+  firsts.push_back(ends.size());
+  std::vector<ViewPoint<K>> out(ends.size());
+  parallel_chunks(firsts.size() - 1, 1024, [&](const auto& range) {
+    stop.check();
+    for (std::size_t r = range.begin(); r != range.end(); ++r) {
+      const std::uint32_t first = ends[firsts[r]].second;
+      const IntersectionSegment& s = segments[first / 2];
+      const ViewPoint<K> point = frame.to_view(first % 2 == 0 ? s.a : s.b);
+      for (std::size_t k = firsts[r]; k != firsts[r + 1]; ++k) out[ends[k].second] = point;
+    }
+  });
+  return out;
+}
+
 template <class K>
 LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
                           std::vector<Cover<K>> covers, const std::vector<IntersectionSegment>& intersections,
@@ -728,11 +759,23 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
       // Each segment's ends in view coordinates and its sources, side by side; then the lines in order.
       std::vector<std::optional<std::pair<ViewPoint<K>, ViewPoint<K>>>> view_ends(intersections.size());
       std::vector<std::vector<std::int32_t>> segment_owns(intersections.size());
+      if (frame.perspective()) {
+        parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
+          options.stop.check();
+          for (std::size_t i = range.begin(); i != range.end(); ++i)
+            view_ends[i] = frame.to_view_clipped(intersections[i].a, intersections[i].b);
+        });
+      } else {
+        // Most crossings end two segments as one lazy point: its view point is made once.
+        const std::vector<ViewPoint<K>> shared = view_points_of_ends(frame, intersections, options.stop);
+        parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
+          for (std::size_t i = range.begin(); i != range.end(); ++i) view_ends[i].emplace(shared[2 * i], shared[2 * i + 1]);
+        });
+      }
       parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
         options.stop.check();
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
           const IntersectionSegment& s = intersections[i];
-          view_ends[i] = frame.to_view_clipped(s.a, s.b);
           if (view_ends[i]) segment_owns[i] = own_sources({{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
         }
       });

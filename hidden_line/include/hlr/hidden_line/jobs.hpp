@@ -66,6 +66,10 @@ class SceneIntersections {
     return seconds_;
   }
   bool found() const { return found_; }
+  // Frees the segments, on every thread, when no view needs them any more: the owner's call, after
+  // which segments() is empty. A line drawing has copied what it needs from them once its lines
+  // are classified.
+  void release();
 
  private:
   const Scene& scene_;

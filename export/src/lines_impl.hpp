@@ -17,67 +17,7 @@
 
 #include <hlr/hidden_line/parallel.hpp>
 
-#include <tbb/parallel_sort.h>
-
-#include <bit>
-
 namespace hlr::exporter {
-
-// The nearest doubles of every intersection end's view coordinates (RecipeRounding::nearest), in
-// the order of lines.end_recipes, two per entry. Where a penetration curve goes on from one facet
-// to the next, two segments end at the same crossing, built from the same recipe (its edge either
-// way round): each recipe is rounded once, and its copies found by a hash of its numbers.
-template <class LineSet>
-std::vector<std::optional<std::array<double, 3>>> round_end_recipes(const LineSet& lines, const RecipeRounding& rounding) {
-  const std::size_t n = 2 * lines.end_recipes.size();
-  auto recipe = [&](std::size_t i) {  // with u before w: one recipe for the crossing
-    ModelPointRecipe r = lines.end_recipes[i / 2][i % 2];
-    if (r.kind == ModelPointRecipe::Kind::edge_crossing && r.w < r.u) std::swap(r.u, r.w);
-    return r;
-  };
-  auto same = [](const ModelPointRecipe& x, const ModelPointRecipe& y) {
-    return x.kind == y.kind && x.u == y.u && x.w == y.w && x.a == y.a && x.b == y.b && x.c == y.c;
-  };
-  struct Ref {
-    std::uint64_t hash;
-    std::uint32_t end;  // 2 × index in end_recipes + end
-    bool operator<(const Ref& o) const { return hash != o.hash ? hash < o.hash : end < o.end; }
-  };
-  std::vector<Ref> refs(n);
-  hidden_line::parallel_chunks(n, 4096, [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const ModelPointRecipe r = recipe(i);
-      std::uint64_t h = std::uint64_t(r.kind) + 0x9e3779b97f4a7c15u;
-      for (const Vec3* v : {&r.u, &r.w, &r.a, &r.b, &r.c})
-        for (double x : *v) h = (h ^ std::bit_cast<std::uint64_t>(x + 0.0)) * 0xff51afd7ed558ccdu, h ^= h >> 32;
-      refs[i] = {h, std::uint32_t(i)};
-    }
-  });
-  tbb::parallel_sort(refs.begin(), refs.end());
-  // Each end's leader: the first end of its hash run with the same recipe.
-  std::vector<std::uint32_t> leader(n);
-  for (std::size_t i = 0; i < n;) {
-    std::size_t j = i;
-    while (j < n && refs[j].hash == refs[i].hash) ++j;
-    for (std::size_t k = i; k < j; ++k) {
-      leader[k] = std::uint32_t(k);
-      for (std::size_t l = i; l < k; ++l)
-        if (leader[l] == l && same(recipe(refs[l].end), recipe(refs[k].end))) {
-          leader[k] = std::uint32_t(l);
-          break;
-        }
-    }
-    i = j;
-  }
-  std::vector<std::optional<std::array<double, 3>>> out(n);
-  hidden_line::parallel_chunks(n, 256, [&](const auto& range) {
-    for (std::size_t k = range.begin(); k != range.end(); ++k)
-      if (leader[k] == k) out[refs[k].end] = rounding.nearest(lines.end_recipes[refs[k].end / 2][refs[k].end % 2]);
-  });
-  for (std::size_t k = 0; k < n; ++k)
-    if (leader[k] != k) out[refs[k].end] = out[refs[leader[k]].end];
-  return out;
-}
 
 // Coordinates are rounded by ViewFrame::rounded, as in hlr-surfaces/1.
 template <class K>
@@ -93,12 +33,11 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   d.stats = lines.stats;
 
   // Each line's ends as written, rounded once for its pieces and its drawing segments: an
-  // intersection's by way of its ends' recipes where they apply, and a mesh edge's input vertices
-  // the same way when their intervals do not settle the rounding (in any view but the axis ones),
-  // rather than by evaluating their lazy view coordinates.
+  // intersection's by way of its ends' recipes where they apply (rounded as its lines were
+  // classified), and a mesh edge's input vertices the same way when their intervals do not settle
+  // the rounding (in any view but the axis ones), rather than by evaluating their lazy view
+  // coordinates.
   const RecipeRounding recipe_rounding(frame.view());
-  std::vector<std::optional<std::array<double, 3>>> recipe_ends;
-  if constexpr (G::exact_constructions) recipe_ends = round_end_recipes(lines, recipe_rounding);
   std::vector<std::array<Point3, 2>> ends(lines.lines.size());
   auto round_ends = [&](std::size_t index) {
     const auto& line = lines.lines[index];
@@ -107,8 +46,8 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
       const ViewPoint<K>& p = end == 0 ? line.a : line.b;
       if constexpr (G::exact_constructions) {
         std::optional<std::array<double, 3>> v;
-        if (line.end_recipes != line.kNoRecipes) {
-          v = recipe_ends[2 * std::size_t(line.end_recipes) + std::size_t(end)];
+        if (line.rounded_ends != line.kNotRounded) {
+          v = lines.rounded_ends[line.rounded_ends][end];
         } else if (line.has_model_ends) {
           auto settled = [](const FT& c) { return G::interval(c).first == G::interval(c).second; };
           if (!settled(p.x) || !settled(p.y) || !settled(p.z))

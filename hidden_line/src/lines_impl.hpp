@@ -38,6 +38,20 @@
 namespace hlr::hidden_line {
 namespace detail {
 
+// The line parameters 0 and 1, one number each per thread: on the exact kernel, the pieces that
+// start or end at a line's end share them (most lines are one piece, hidden all along) instead of
+// holding lazy numbers of their own.
+template <class K>
+const typename Geometry<K>::FT& parameter_zero() {
+  static thread_local const typename Geometry<K>::FT zero(0);
+  return zero;
+}
+template <class K>
+const typename Geometry<K>::FT& parameter_one() {
+  static thread_local const typename Geometry<K>::FT one(1);
+  return one;
+}
+
 // A line's image a -> b in the view plane, and parameters along it.
 template <class K>
 struct ImageLine {
@@ -59,8 +73,8 @@ struct ImageLine {
   // are 0 and 1 exactly, not quotients equal to them that comparisons would evaluate exactly.
   std::optional<FT> end_param(const P& q) const {
     if (const std::uintptr_t id = G::identity(q); id != 0) {
-      if (id == G::identity(a)) return FT(0);
-      if (id == G::identity(b)) return FT(1);
+      if (id == G::identity(a)) return parameter_zero<K>();
+      if (id == G::identity(b)) return parameter_one<K>();
     }
     return std::nullopt;
   }
@@ -200,7 +214,8 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   using G = Geometry<K>;
   using FT = typename G::FT;
   std::vector<FT> ts;
-  if (unit) ts = {FT(0), FT(1)};
+  const FT &zero = parameter_zero<K>(), &one = parameter_one<K>();
+  if (unit) ts = {zero, one};
   // With `unit`, parameters outside (0, 1) are known from predicates before any is constructed: a
   // corner on the line lies strictly between a and b along the line's main axis, a crossing exactly
   // when a and b lie strictly on opposite sides of the crossing edge's support line.
@@ -227,7 +242,7 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
       return false;
     };
     if (!near(&polygon.outer) && std::none_of(holes.begin(), holes.end(), near)) {
-      if (clip::side_of_polygon_on_line<K>(polygon.outer, holes, {}, line.a) > 0) return {{FT(0), FT(1)}};
+      if (clip::side_of_polygon_on_line<K>(polygon.outer, holes, {}, line.a) > 0) return {{zero, one}};
       return {};
     }
   }
@@ -244,7 +259,7 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
   for (const clip::Contour<K>* h : holes) sides_of(*h);
   if (unit && oriented)
     if (const auto inside = segment_in_chord<K>(line, polygon.outer, holes, sides)) {
-      if (*inside) return {{FT(0), FT(1)}};
+      if (*inside) return {{zero, one}};
       return {};
     }
   std::size_t offset = 0;
@@ -561,7 +576,8 @@ class Classifier {
       if (added) hidden_all_along = covers_unit(whole);
       return hidden_all_along;
     });
-    if (hidden_all_along) return {{FT(0), FT(1), false}};
+    const FT &zero = parameter_zero<K>(), &one = parameter_one<K>();
+    if (hidden_all_along) return {{zero, one, false}};
 
     // Faces seen edge-on cover the line where their edges' images run along it.
     edge_on_grid_.query(line.bbox(), [&](std::uint32_t i) {
@@ -572,13 +588,13 @@ class Classifier {
       if (G::orientation(pa, pb, pu) != 0 || G::orientation(pa, pb, pw) != 0) return;
       const FT tu = params.at_point(pu), tw = params.at_point(pw);
       FT lo = std::min(tu, tw), hi = std::max(tu, tw);
-      if (hi <= FT(0) || lo >= FT(1)) return;
-      lo = std::max(lo, FT(0));
-      hi = std::min(hi, FT(1));
+      if (hi <= zero || lo >= one) return;
+      lo = std::max(lo, zero);
+      hi = std::min(hi, one);
       // The edge's depth at line parameter t: u.z + (t - tu) / (tw - tu) (w.z - u.z).
       const FT slope = (w.z - u.z) / (tw - tu);
       const FT f0 = u.z - tu * slope - a.z;
-      const FT f1 = u.z + (FT(1) - tu) * slope - b.z;
+      const FT f1 = u.z + (one - tu) * slope - b.z;
       Depth<K>& d = scratch.edge_on.emplace_back();
       d.sign0 = G::sign(f0);
       d.sign1 = G::sign(f1);
@@ -587,7 +603,7 @@ class Classifier {
     });
 
     // Split points: occluder ends and the zeros of f inside each occluder.
-    std::vector<FT> ts{FT(0), FT(1)};
+    std::vector<FT> ts{zero, one};
     for (const auto& o : occluders_) {
       ts.push_back(o.lo);
       ts.push_back(o.hi);
@@ -667,11 +683,17 @@ class Classifier {
   LooseGrid grid_, edge_on_grid_;
 };
 
-// The view points of the segments' ends in an orthographic view, 2 i + e for end e of segment i:
-// ends that are one lazy point (the same id) share one view point.
+// The segments' ends in an orthographic view, 2 i + e for end e of segment i: their view points,
+// and on the exact kernel the nearest doubles to them (from their recipes). Ends that are one lazy
+// point (the same id) share one view point, rounded once.
 template <class K>
-std::vector<ViewPoint<K>> view_points_of_ends(const ViewFrame<K>& frame,
-                                             const std::vector<IntersectionSegment>& segments, const StopToken& stop) {
+struct ViewEnds {
+  std::vector<ViewPoint<K>> points;
+  std::vector<std::optional<std::array<double, 3>>> rounded;
+};
+template <class K>
+ViewEnds<K> view_ends_of(const ViewFrame<K>& frame, const std::vector<IntersectionSegment>& segments,
+                         const StopToken& stop) {
   std::vector<std::pair<std::size_t, std::uint32_t>> ends(2 * segments.size());  // (point id, end)
   parallel_chunks(segments.size(), 4096, [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -684,14 +706,23 @@ std::vector<ViewPoint<K>> view_points_of_ends(const ViewFrame<K>& frame,
   for (std::size_t k = 0; k < ends.size(); ++k)
     if (k == 0 || ends[k].first != ends[k - 1].first) firsts.push_back(k);
   firsts.push_back(ends.size());
-  std::vector<ViewPoint<K>> out(ends.size());
+  constexpr bool rounds = Geometry<K>::exact_constructions;
+  const RecipeRounding rounding(frame.view());
+  ViewEnds<K> out;
+  out.points.resize(ends.size());
+  if (rounds) out.rounded.resize(ends.size());
   parallel_chunks(firsts.size() - 1, 1024, [&](const auto& range) {
     stop.check();
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       const std::uint32_t first = ends[firsts[r]].second;
       const IntersectionSegment& s = segments[first / 2];
       const ViewPoint<K> point = frame.to_view(first % 2 == 0 ? s.a : s.b);
-      for (std::size_t k = firsts[r]; k != firsts[r + 1]; ++k) out[ends[k].second] = point;
+      std::optional<std::array<double, 3>> rounded;
+      if (rounds) rounded = rounding.nearest(first % 2 == 0 ? s.recipe_a : s.recipe_b);
+      for (std::size_t k = firsts[r]; k != firsts[r + 1]; ++k) {
+        out.points[ends[k].second] = point;
+        if (rounds) out.rounded[ends[k].second] = rounded;
+      }
     }
   });
   return out;
@@ -734,7 +765,8 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
     out.lines.reserve(line_count);
     owns.reserve(line_count);
     segments.reserve(line_count);
-    if (options.intersections && !frame.perspective()) out.end_recipes.reserve(intersections.size());
+    if (options.intersections && !frame.perspective() && Geometry<K>::exact_constructions)
+      out.rounded_ends.reserve(intersections.size());
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       const NearCut<K>& cut = sources.near_cuts[m];
       for (const FeatureEdge& edge : edges[m]) {
@@ -759,6 +791,7 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
       // Each segment's ends in view coordinates and its sources, side by side; then the lines in order.
       std::vector<std::optional<std::pair<ViewPoint<K>, ViewPoint<K>>>> view_ends(intersections.size());
       std::vector<std::vector<std::int32_t>> segment_owns(intersections.size());
+      ViewEnds<K> shared_ends;
       if (frame.perspective()) {
         parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
           options.stop.check();
@@ -767,10 +800,12 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         });
       } else {
         // Most crossings end two segments as one lazy point: its view point is made once.
-        const std::vector<ViewPoint<K>> shared = view_points_of_ends(frame, intersections, options.stop);
+        shared_ends = view_ends_of(frame, intersections, options.stop);
         parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
-          for (std::size_t i = range.begin(); i != range.end(); ++i) view_ends[i].emplace(shared[2 * i], shared[2 * i + 1]);
+          for (std::size_t i = range.begin(); i != range.end(); ++i)
+            view_ends[i].emplace(shared_ends.points[2 * i], shared_ends.points[2 * i + 1]);
         });
+        std::vector<ViewPoint<K>>().swap(shared_ends.points);
       }
       parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
         options.stop.check();
@@ -789,9 +824,9 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         line.kind = FeatureKind::intersection;
         line.mesh = s.mesh_a;
         line.meeting_degrees = s.meeting_degrees;
-        if (!frame.perspective()) {  // there the ends are s.a and s.b, not cut by a near plane
-          line.end_recipes = std::uint32_t(out.end_recipes.size());
-          out.end_recipes.push_back({s.recipe_a, s.recipe_b});
+        if (!shared_ends.rounded.empty()) {
+          line.rounded_ends = std::uint32_t(out.rounded_ends.size());
+          out.rounded_ends.push_back({shared_ends.rounded[2 * i], shared_ends.rounded[2 * i + 1]});
         }
         add(std::move(line), std::move(segment_owns[i]));
         segments.back() = &s;

@@ -69,9 +69,10 @@ struct FeatureLine {
   // not where the near plane of a perspective view cuts the edge (an end is then constructed).
   bool has_model_ends = false;
   Vec3 model_a{}, model_b{};
-  // Intersections in orthographic views: the index of their ends' recipes in LineSet::end_recipes.
-  static constexpr std::uint32_t kNoRecipes = UINT32_MAX;
-  std::uint32_t end_recipes = kNoRecipes;
+  // Intersections in orthographic views on the exact kernel: the index of their ends' rounding in
+  // LineSet::rounded_ends.
+  static constexpr std::uint32_t kNotRounded = UINT32_MAX;
+  std::uint32_t rounded_ends = kNotRounded;
 };
 
 struct LineStats {
@@ -87,7 +88,9 @@ struct LineSet {
   LineStats stats;
   Vec3 view_direction{0, 0, -1};  // of the view the lines were classified in
   std::optional<Vec3> view_eye;   // and its eye, when it is a perspective view
-  std::vector<std::array<ModelPointRecipe, 2>> end_recipes;  // see FeatureLine::end_recipes
+  // See FeatureLine::rounded_ends: the nearest doubles to the ends' view coordinates, worked out
+  // from their recipes (RecipeRounding), or nothing where the general path must round them.
+  std::vector<std::array<std::optional<std::array<double, 3>>, 2>> rounded_ends;
 };
 
 struct LineOptions {

@@ -173,37 +173,10 @@ CGAL::Comparison_result compare_points(const EK::Point_3& a, const EK::Point_3& 
 // the plane or crossings of edges with it, in lexicographic order (the order along the line the
 // two planes meet in). Built from the input doubles, not from that line: a crossing of edge i j
 // is c_i + t (c_j - c_i) with t = s_i / (s_i - s_j), s the signed volumes against the plane,
-// exactly. Such a point is exact with few bits, so what later needs it exactly (the
-// precedence of lines, their classification) evaluates a leaf, not a chain of plane, line and
-// interval constructions. A crossing shared by the triangles on both sides of an edge is built
-// once per plane, so that the two are one point.
-// A crossing of an edge u w with a plane (its recipe) as a lazy exact point: the intervals that
-// TriangleChords works out now, the exact (s_u w - s_w u) / (s_u - s_w) (edge_volumes, in Mpzf: no
-// gcd; one rational division per coordinate) only when a predicate needs it, which few do.
-class CrossingRep final
-    : public CGAL::Lazy_rep<EK::Approximate_kernel::Point_3, EK::Exact_kernel::Point_3, EK::E2A> {
- public:
-  using Base = CGAL::Lazy_rep<EK::Approximate_kernel::Point_3, EK::Exact_kernel::Point_3, EK::E2A>;
-  CrossingRep(const ModelPointRecipe& recipe, const std::array<CGAL::Interval_nt<false>, 3>& at)
-      : Base(EK::Approximate_kernel::Point_3(at[0], at[1], at[2])), recipe_(recipe) {}
-
-  void update_exact() const override {
-    using Z = CGAL::Mpzf;
-    using ET = EK::Exact_kernel::FT;
-    const Vec3 &pu = recipe_.u, &pw = recipe_.w;
-    const auto [su, sw] = edge_volumes(recipe_);
-    const ET den = ET(su - sw);
-    ET x[3];
-    for (int k = 0; k < 3; ++k) x[k] = ET(ET(su * Z(pw[k]) - sw * Z(pu[k])) / den);
-    auto* exact = new EK::Exact_kernel::Point_3(x[0], x[1], x[2]);
-    this->set_at(exact);
-    this->set_ptr(exact);
-  }
-
- private:
-  ModelPointRecipe recipe_;
-};
-
+// exactly. Such a point is a lazy leaf (lazy_point, kernel/exact_output.hpp): its intervals now,
+// its exact coordinates only for the few predicates that need them, never a chain of plane, line
+// and interval constructions. A crossing shared by the triangles on both sides of an edge is
+// built once per plane, so that the two are one point.
 class TriangleChords {
  public:
   using ET = FT::Exact_type;
@@ -257,7 +230,7 @@ class TriangleChords {
     return CGAL::EQUAL;  // equal doubles
   }
 
-  // The end as an exact point (a CrossingRep for a crossing), one per chunk for each input vertex
+  // The end as an exact point (a lazy one for a crossing), one per chunk for each input vertex
   // and each crossing of an edge with a plane: ends that are one point are one lazy point.
   EK::Point_3 point(const End& e) {
     const ModelPointRecipe& r = e.recipe;
@@ -265,7 +238,7 @@ class TriangleChords {
     // A vertex's key has u = w and plane 0, which no crossing's has (its edge has two ends).
     auto [it, added] = crossings_.try_emplace({edge_key(e.u, e.w), vertex ? 0 : e.plane_id, e.mesh});
     if (added)
-      it->second = vertex ? EK::Point_3(r.u[0], r.u[1], r.u[2]) : EK::Point_3(EK::Point_3::Rep(new CrossingRep(r, e.at)));
+      it->second = vertex ? EK::Point_3(r.u[0], r.u[1], r.u[2]) : lazy_point(r, e.at);
     return it->second;
   }
 

@@ -455,5 +455,41 @@ TEST(ExactOutput, RecipesRoundAsTheViewFrame) {
   EXPECT_FALSE(RecipeRounding(View{"p", {0, 0, -1}, {0, 1, 0}, Vec3{0, 0, 5}}).nearest({ModelPointRecipe::Kind::input_point}));
 }
 
+// lazy_point is the crossing of the edge u w with the plane through a, b, c that Epeck constructs:
+// equal to it exactly (comparisons that only the exact coordinates settle), on random, grid-snapped
+// and mixed-magnitude input (1e-9 next to 1e9), and its predicates are that point's.
+TEST(ExactOutput, LazyPointIsTheEpeckCrossing) {
+  using K = ExactKernel;
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> any(-10, 10);
+  std::uniform_int_distribution<int> grid(-4, 4);
+  std::uniform_int_distribution<int> exponent(-30, 30);
+  int checked = 0;
+  for (int i = 0; i < 3000; ++i) {
+    auto value = [&] {
+      if (i % 3 == 0) return grid(random) / 2.0;
+      if (i % 3 == 1) return std::ldexp(any(random), exponent(random));
+      return any(random);
+    };
+    auto point = [&] { return Vec3{value(), value(), value()}; };
+    const ModelPointRecipe r{ModelPointRecipe::Kind::edge_crossing, point(), point(), point(), point(), point()};
+    auto p3 = [](const Vec3& v) { return K::Point_3(v[0], v[1], v[2]); };
+    if (CGAL::collinear(p3(r.a), p3(r.b), p3(r.c))) continue;
+    const K::Plane_3 plane(p3(r.a), p3(r.b), p3(r.c));
+    if (plane.oriented_side(p3(r.u)) * plane.oriented_side(p3(r.w)) >= 0) continue;  // not across it
+    const auto crossing = CGAL::intersection(K::Segment_3(p3(r.u), p3(r.w)), plane);
+    ASSERT_TRUE(crossing) << i;
+    const K::Point_3& expected = boost::get<K::Point_3>(*crossing);
+    const auto& box = CGAL::approx(expected);
+    const K::Point_3 got = lazy_point(r, {box.x(), box.y(), box.z()});
+    ASSERT_EQ(CGAL::compare_xyz(got, expected), CGAL::EQUAL) << i;
+    ASSERT_TRUE(plane.has_on(got)) << i;
+    const K::Point_3 q = p3(point()), s = p3(point());
+    ASSERT_EQ(CGAL::orientation(p3(r.u), q, s, got), CGAL::orientation(p3(r.u), q, s, expected)) << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+}
+
 }  // namespace
 }  // namespace hlr

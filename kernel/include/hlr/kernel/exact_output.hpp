@@ -1,4 +1,5 @@
-// Correctly rounded output of constructed points without lazy numbers.
+// Constructed points by their recipes: correctly rounded output without lazy numbers, and lazy
+// exact points that do no exact arithmetic until a predicate needs it.
 //
 // Output rounds every line end once, correctly (Geometry::to_double). For an intersection line's
 // end on Epeck that means evaluating its view coordinate X·p exactly: a lazy node per product
@@ -51,6 +52,36 @@ inline std::array<CGAL::Mpzf, 4> homogeneous(const ModelPointRecipe& r) {
   for (int k = 0; k < 3; ++k) n[k] = su * Z(r.w[k]) - sw * Z(r.u[k]);
   n[3] = su - sw;
   return n;
+}
+
+namespace exact_output_detail {
+using LazyPoint3 = CGAL::Lazy_rep<ExactKernel::Approximate_kernel::Point_3, ExactKernel::Exact_kernel::Point_3,
+                                  ExactKernel::E2A>;
+class RecipePointRep final : public LazyPoint3 {
+ public:
+  RecipePointRep(const ModelPointRecipe& recipe, const std::array<CGAL::Interval_nt<false>, 3>& approx)
+      : LazyPoint3(ExactKernel::Approximate_kernel::Point_3(approx[0], approx[1], approx[2])), recipe_(recipe) {}
+
+  void update_exact() const override {
+    using ET = ExactKernel::Exact_kernel::FT;
+    const std::array<CGAL::Mpzf, 4> n = homogeneous(recipe_);
+    const ET den(n[3]);
+    auto* exact = new ExactKernel::Exact_kernel::Point_3(ET(ET(n[0]) / den), ET(ET(n[1]) / den), ET(ET(n[2]) / den));
+    this->set_at(exact);
+    this->set_ptr(exact);
+  }
+
+ private:
+  ModelPointRecipe recipe_;
+};
+}  // namespace exact_output_detail
+
+// The recipe's point as a lazy exact point, given intervals that hold it: its exact coordinates
+// (homogeneous: one rational division each) are made only when a predicate needs them, which for
+// the crossings of penetration lines few do.
+inline ExactKernel::Point_3 lazy_point(const ModelPointRecipe& recipe,
+                                       const std::array<CGAL::Interval_nt<false>, 3>& approx) {
+  return ExactKernel::Point_3(ExactKernel::Point_3::Rep(new exact_output_detail::RecipePointRep(recipe, approx)));
 }
 
 // The double nearest to num / den, ties to the lower one (as Geometry::to_double rounds); nothing

@@ -1,10 +1,9 @@
 // The line and surface jobs (jobs.hpp), for each kernel. The stages are instantiated in the
 // modules' instantiate_<kernel>.cpp files: this file only chains them.
 #include <hlr/export/jobs.hpp>
-
+#include <hlr/hidden_line/parallel.hpp>
 
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
 #include <memory>
@@ -29,7 +28,7 @@ hidden_line::LineOptions line_options(const DrawOptions& options) {
 template <class K>
 void release_all_but_image_points(hidden_line::Sources<K>& sources) {
   auto& polygons = sources.polygons;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, polygons.size(), 4096), [&](const auto& range) {
+  hidden_line::parallel_chunks(polygons.size(), 4096, [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) polygons[i] = {};
   });
   hidden_line::Sources<K> rest;

@@ -18,7 +18,6 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
-#include <CGAL/Mpzf.h>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
@@ -179,7 +178,6 @@ CGAL::Comparison_result compare_points(const EK::Point_3& a, const EK::Point_3& 
 // built once per plane, so that the two are one point.
 class TriangleChords {
  public:
-  using ET = FT::Exact_type;
   using I = CGAL::Interval_nt<false>;
   explicit TriangleChords(const std::vector<Mesh>& meshes) : meshes_(meshes) {}
 

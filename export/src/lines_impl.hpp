@@ -8,9 +8,9 @@
 // of its line (t = 0 or 1, known from the interval of t) is that end, and a piece that starts
 // where the one before it ends (the same number) starts at that rounded point. Both give the
 // same double as the general formula, without the arithmetic: the exact value is the same. The
-// ends of intersection lines in orthographic views are rounded from how they were built
-// (kernel/exact_output.hpp: no lazy numbers), and drawing segments by way of their line and
-// parameters, so that their ends take that way too.
+// ends of intersection lines in orthographic views come rounded with the lines (from how they were
+// built, kernel/exact_output.hpp: no lazy numbers), and drawing segments are rounded by way of
+// their line and parameters, so that their ends take that way too.
 #pragma once
 
 #include <hlr/export/lines.hpp>

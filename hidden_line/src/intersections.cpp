@@ -234,7 +234,7 @@ class TriangleChords {
     const ModelPointRecipe& r = e.recipe;
     const bool vertex = r.kind == ModelPointRecipe::Kind::input_point;
     // A vertex's key has u = w and plane 0, which no crossing's has (its edge has two ends).
-    auto [it, added] = crossings_.try_emplace({edge_key(e.u, e.w), vertex ? 0 : e.plane_id, e.mesh});
+    auto [it, added] = ends_.try_emplace({edge_key(e.u, e.w), vertex ? 0 : e.plane_id, e.mesh});
     if (added)
       it->second = vertex ? EK::Point_3(r.u[0], r.u[1], r.u[2]) : lazy_point(r, e.at);
     return it->second;
@@ -268,7 +268,7 @@ class TriangleChords {
   }
 
   const std::vector<Mesh>& meshes_;
-  std::map<std::tuple<std::uint64_t, std::uint64_t, std::uint32_t>, EK::Point_3> crossings_;
+  std::map<std::tuple<std::uint64_t, std::uint64_t, std::uint32_t>, EK::Point_3> ends_;  // point(): (edge, plane, mesh)
 };
 
 }  // namespace

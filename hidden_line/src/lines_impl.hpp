@@ -803,9 +803,9 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         shared_ends = view_ends_of(frame, intersections, options.stop);
         parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
           for (std::size_t i = range.begin(); i != range.end(); ++i)
-            view_ends[i].emplace(shared_ends.points[2 * i], shared_ends.points[2 * i + 1]);
+            view_ends[i].emplace(std::move(shared_ends.points[2 * i]), std::move(shared_ends.points[2 * i + 1]));
         });
-        std::vector<ViewPoint<K>>().swap(shared_ends.points);
+        std::vector<ViewPoint<K>>().swap(shared_ends.points);  // moved from
       }
       parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
         options.stop.check();

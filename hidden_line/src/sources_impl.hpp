@@ -294,7 +294,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     out.image_points.push_back(std::move(p2));
     out.near_cuts.push_back(std::move(cut));
   }
-  // Grown by doubling, kept to the end of the run.
+  // Grown by doubling, and kept until the lines are classified (a drawing) or to the end of the run.
   out.polygons.shrink_to_fit();
   out.lines.shrink_to_fit();
   out.line_origins.shrink_to_fit();

@@ -28,6 +28,7 @@ struct MeshOptions {
   std::string output;
   cad::CadOptions cad;
   RunLimits limits;
+  int threads = 0;  // BRepMesh meshes faces in parallel
 };
 
 enum class Format { off, obj, stl, ply };
@@ -180,7 +181,7 @@ std::string document(const Scene& scene, Format format, const std::vector<std::s
 int run(const MeshOptions& options) {
   const Format format = format_of(options.output);
   AtomicFile file(options.output);
-  RunScope run(options.limits);
+  RunScope run(options.limits, options.threads);
   const Scene scene = run.read(options.inputs, options.cad, "model", "models");
   run.stage("writing " + options.output);
   // Part names as the drawings name them: the source's, else the file's stem.
@@ -224,6 +225,7 @@ Subcommand add_mesh_command(CLI::App& parent) {
       ->type_name("OUT");
   add_cad_options(*cmd, options->cad);
   add_limit_options(*cmd, options->limits);
+  add_threads_option(*cmd, options->threads);
   cmd->footer(
       "Example:\n"
       "  hlr mesh part.step -o out/part.off\n"

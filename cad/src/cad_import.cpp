@@ -454,8 +454,10 @@ std::vector<CadPart> read_model(const std::string& path, const CadOptions& optio
   std::size_t unnamed = 0;
   for (const Body& b : bodies) {
     BRepTools::Clean(b.shape);  // a .brep's own triangulation would stand in for the deflection
+    // Faces are meshed in parallel on oneTBB, within the run's --threads; each face's triangles
+    // depend only on its own boundary, so the result is the same for any number of threads.
     BRepMesh_IncrementalMesh mesher(b.shape, deflection, Standard_False, options.angular_degrees * std::numbers::pi / 180.0,
-                                    Standard_False);
+                                    Standard_True);
     if (!mesher.IsDone()) throw ImportError(path + ": the tessellation failed (BRepMesh did not finish)");
     const std::vector<TopoDS_Shape> split = split_bodies(b.shape);
     for (std::size_t i = 0; i < split.size(); ++i) {

@@ -395,6 +395,23 @@ TEST(CadCli, LineOracleOnTheWrittenMesh) {
   }
 }
 
+// BRepMesh meshes faces in parallel: the tessellation, and so the drawing, must not depend on
+// the number of threads (a plate with a grid of holes has many faces to share out).
+TEST(CadCli, TessellationIsTheSameForAnyThreadCount) {
+  cad_test::write_bench_parts(fixtures().string(), {6});
+  for (const std::string name : {"grid_6x6", "flange", "bracket", "assembly"}) {
+    std::string meshes[2];
+    for (int threads : {1, 2}) {
+      const std::string path = out(name + "-t" + std::to_string(threads) + ".off");
+      const Outcome run = hlr_run({"mesh", fixture(name + ".step"), "--threads", std::to_string(threads), "-o", path});
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      meshes[threads - 1] = slurp(path);
+    }
+    EXPECT_GT(meshes[0].size(), 0u) << name;
+    EXPECT_TRUE(meshes[0] == meshes[1]) << name << ": the OFF written with 1 and with 2 threads differ";
+  }
+}
+
 TEST(CadCli, MeshFormatsReadBackAlike) {
   const auto parts = cad::load_cad(fixture("plate.step"));
   const Mesh& mesh = parts[0].mesh;

@@ -362,49 +362,16 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     const std::size_t i = std::min(x.info(), y.info()), j = std::max(x.info(), y.info());
     if (crosses(i, j)) mine.pairs.emplace_back(i, j);
   };
-  // The segment tree scans lists of up to kCutoff boxes directly instead of splitting them further.
-  // Mesh faces' boxes overlap their neighbours' in every direction, and CGAL's default of 10
-  // spends most of the search on splitting: with 1,000, finding the 538,234 overlapping pairs of
-  // refined_elephant takes 0.11 s instead of 0.32 s (docs/BENCHMARKS.md, "Eighth run").
-  constexpr std::ptrdiff_t kCutoff = 1000;
-  if (parallel) {
-    // Slabs across the scene's longest axis, searched side by side. CGAL's Parallel_tag runs only
-    // the top of its tree in parallel (asm_1M: 4.3 s on one thread, 3.6 s on two). A box goes into
-    // every slab its extent meets, and a pair belongs to the slab that holds the larger of the two
-    // boxes' lower ends, which both reach: each pair is tested once. Slab bounds are quantiles of
-    // the lower ends, so that slabs hold about as many boxes.
-    int axis = 0;
-    {
-      double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-      for (const Box& b : boxes)
-        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], b.min_coord(k)), hi[k] = std::max(hi[k], b.max_coord(k));
-      for (int k = 1; k < 3; ++k)
-        if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-    }
-    const auto threads = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
-    const std::size_t slab_count = std::min<std::size_t>(4 * threads, boxes.size() / 4096 + 1);
-    std::vector<double> lower_ends(boxes.size());
-    for (std::size_t b = 0; b < boxes.size(); ++b) lower_ends[b] = boxes[b].min_coord(axis);
-    std::sort(lower_ends.begin(), lower_ends.end());
-    std::vector<double> bounds;  // slab s is [bounds[s - 1], bounds[s]), the first and last unbounded
-    for (std::size_t s = 1; s < slab_count; ++s) bounds.push_back(lower_ends[s * lower_ends.size() / slab_count]);
-    auto slab_of = [&](double x) { return std::size_t(std::upper_bound(bounds.begin(), bounds.end(), x) - bounds.begin()); };
-    std::vector<std::vector<Box>> slabs(slab_count);
+  // Slabs across the scene's longest axis, searched side by side.
+  int axis = 0;
+  {
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (const Box& b : boxes)
-      for (std::size_t s = slab_of(b.min_coord(axis)), last = slab_of(b.max_coord(axis)); s <= last; ++s)
-        slabs[s].push_back(b);
-    parallel_chunks(slab_count, 1, [&](const auto& range) {
-      for (std::size_t s = range.begin(); s != range.end(); ++s)
-        CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
-            slabs[s].begin(), slabs[s].end(),
-            [&](const Box& x, const Box& y) {
-              if (slab_of(std::max(x.min_coord(axis), y.min_coord(axis))) == s) test_boxes(x, y);
-            },
-            kCutoff);
-    });
-  } else {
-    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), test_boxes, kCutoff);
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], b.min_coord(k)), hi[k] = std::max(hi[k], b.max_coord(k));
+    for (int k = 1; k < 3; ++k)
+      if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
   }
+  detail::overlapping_box_pairs(boxes, axis, test_boxes);
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const Found& f : found) pairs.insert(pairs.end(), f.pairs.begin(), f.pairs.end());
   std::sort(pairs.begin(), pairs.end());

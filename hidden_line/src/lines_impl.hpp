@@ -22,6 +22,8 @@
 
 #include "box_index.hpp"
 
+#include <CGAL/box_intersection_d.h>
+
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_sort.h>
 
@@ -971,11 +973,15 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   };
   std::vector<Direction> directions(n);
   // Lines are filed by where they lie, not by their boxes, which overlap a great many others in
-  // a large drawing: by their angle in (-pi/2, pi/2] and their offset from the origin along the
-  // normal, each with a bound on its error, so that collinear lines' keys overlap (a line near
-  // the ends of the angle range also at the other end, with the offset negated: the same line
-  // seen the other way). Lines whose direction is too uncertain go by their boxes.
-  std::vector<CGAL::Bbox_2> keys(n);
+  // a large drawing: by their angle in (-pi/2, pi/2], their offset from the origin along the
+  // normal, and where they lie along their direction, each with a bound on its error, so that
+  // collinear lines whose images meet have overlapping keys (a line near the ends of the angle
+  // range also at the other end, with the offset and the position negated: the same line seen the
+  // other way). The position matters where thousands of lines share one image line, as the hole
+  // rims of a plate seen edge-on do: angle and offset alone would pair each with all the others.
+  // Lines whose direction is too uncertain go by their boxes.
+  using Key = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+  std::vector<Key> keys(n);
   std::vector<char> is_uncertain(n, 0);
   constexpr double kHalfTurn = std::numbers::pi;
   auto file = [&](std::uint32_t i) {
@@ -994,71 +1000,80 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     }
     const Direction& u = directions[i] = {dx / length, dy / length, 4 * spread / length + 1e-12};
     // The direction within `error` of the true one turns by less than twice that; the offset
-    // n·a is off by the direction's error times |a|, a's box, and rounding.
+    // n·a and the positions u·a, u·b are off by the direction's error times the point's size,
+    // the boxes, and rounding.
     const double sign = u.x < 0 || (u.x == 0 && u.y < 0) ? -1 : 1;
     const double px = (a.xmin() + a.xmax()) / 2, py = (a.ymin() + a.ymax()) / 2, size = std::abs(px) + std::abs(py);
+    const double qx = (b.xmin() + b.xmax()) / 2, qy = (b.ymin() + b.ymax()) / 2;
+    const double size_b = std::abs(qx) + std::abs(qy), size_ab = std::max(size, size_b);
     const double angle = std::atan2(sign * u.y, sign * u.x), offset = sign * (u.x * py - u.y * px);
+    const double at_a = sign * (u.x * px + u.y * py), at_b = sign * (u.x * qx + u.y * qy);
     const double angle_error = 2 * u.error, offset_error = 2 * (u.error * size + spread) + 1e-14 * size;
-    keys[i] = CGAL::Bbox_2(angle - angle_error, offset - offset_error, angle + angle_error, offset + offset_error);
+    const double position_error = 2 * (u.error * size_ab + spread) + 1e-14 * size_ab;
+    double lo[3] = {angle - angle_error, offset - offset_error, std::min(at_a, at_b) - position_error};
+    double hi[3] = {angle + angle_error, offset + offset_error, std::max(at_a, at_b) + position_error};
+    keys[i] = Key(lo, hi, i);
   };
   parallel_chunks(n, 4096, [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) file(std::uint32_t(i));
   });
   std::vector<std::uint32_t> uncertain;
-  CGAL::Bbox_2 box_domain, key_domain;
+  CGAL::Bbox_2 box_domain;
+  std::vector<Key> filed;
   for (std::uint32_t i = 0; i < n; ++i) {
     if (is_uncertain[i]) {
       uncertain.push_back(i);
       box_domain += images[i].bbox();
     } else if (directions[i].error != HUGE_VAL) {
-      key_domain += keys[i];
+      const Key& k = keys[i];
+      filed.push_back(k);
+      if (k.max_coord(0) >= kHalfTurn / 2 || k.min_coord(0) <= -kHalfTurn / 2) {
+        // The same line seen the other way: the angle a half turn on, offset and position negated.
+        const double shift = k.max_coord(0) > kHalfTurn / 2 ? -kHalfTurn : kHalfTurn;
+        double lo[3] = {k.min_coord(0) + shift, -k.max_coord(1), -k.max_coord(2)};
+        double hi[3] = {k.max_coord(0) + shift, -k.min_coord(1), -k.min_coord(2)};
+        filed.push_back(Key(lo, hi, i));
+      }
     }
   }
-  auto mirrored = [&](const CGAL::Bbox_2& k) {  // the key of the same line seen the other way
-    const double shift = k.xmax() > kHalfTurn / 2 ? -kHalfTurn : kHalfTurn;
-    return CGAL::Bbox_2(k.xmin() + shift, -k.ymax(), k.xmax() + shift, -k.ymin());
-  };
-  auto near_the_turn = [&](const CGAL::Bbox_2& k) { return k.xmax() >= kHalfTurn / 2 || k.xmin() <= -kHalfTurn / 2; };
-  detail::LooseGrid key_grid(key_domain, n), box_grid(box_domain, uncertain.size());
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (directions[i].error == HUGE_VAL) continue;
-    key_grid.insert(i, keys[i]);
-    if (near_the_turn(keys[i])) key_grid.insert(std::uint32_t(n + i), mirrored(keys[i]));
-  }
+  detail::LooseGrid box_grid(box_domain, uncertain.size());
   for (std::uint32_t i : uncertain) box_grid.insert(i, images[i].bbox());
   auto maybe_collinear = [&](std::uint32_t i, std::uint32_t j) {
     const Direction &u = directions[i], &v = directions[j];
     return !(std::abs(u.x * v.y - u.y * v.x) > u.error + v.error) && collinear_lines(i, j);
   };
-  // Only lines whose boxes overlap are joined (their spans may interact); uncertain lines are
-  // asked against every line whose box overlaps theirs, from both sides.
-  constexpr std::size_t kLinesPerChunk = 1024;
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> chunk_pairs((n + kLinesPerChunk - 1) / kLinesPerChunk);
-  parallel_chunks(chunk_pairs.size(), 1, [&](const auto& range) {
-    for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
-      stop.check();
-      auto& pairs = chunk_pairs[chunk];
-      for (std::uint32_t i = std::uint32_t(chunk * kLinesPerChunk); i < std::min(n, (chunk + 1) * kLinesPerChunk); ++i) {
-        if (lines.lines[i].pieces.empty()) continue;
-        const CGAL::Bbox_2 box = images[i].bbox();
-        auto consider = [&](std::uint32_t j) {
-          if (j != i && CGAL::do_overlap(box, images[j].bbox()) && maybe_collinear(i, j))
-            pairs.emplace_back(std::min(i, j), std::max(i, j));
-        };
-        box_grid.query(box, [&](std::uint32_t j) {
-          if (j > i || directions[i].error != HUGE_VAL) consider(j);
-        });
-        if (directions[i].error == HUGE_VAL) continue;
-        key_grid.query(keys[i], [&](std::uint32_t j) {
-          if (j >= n) j -= std::uint32_t(n);
-          if (j > i) consider(j);
-        });
-      }
+  // Only lines whose boxes overlap are joined (their spans may interact); every line is asked
+  // against the uncertain lines whose boxes overlap its own. The groups are the
+  // components of that relation, so a pair already in one group needs no test: thousands of
+  // lines on one image line are then joined by about as many tests, not by all their pairs.
+  // Each thread keeps its own groups, and the pairs it joined; those pairs then make the groups.
+  struct Joined {
+    std::optional<UnionFind> groups;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    std::size_t polls = 0;
+  };
+  tbb::enumerable_thread_specific<Joined> joined;
+  auto join_if_collinear = [&](Joined& mine, std::uint32_t i, std::uint32_t j) {
+    stop.check_every(mine.polls, 4096);
+    if (!mine.groups) mine.groups.emplace(n);
+    if (i != j && mine.groups->find(i) != mine.groups->find(j) && CGAL::do_overlap(images[i].bbox(), images[j].bbox()) &&
+        maybe_collinear(i, j)) {
+      mine.groups->join(i, j);
+      mine.pairs.emplace_back(i, j);
     }
-  });
+  };
+  detail::overlapping_box_pairs(filed, 2, [&](const Key& x, const Key& y) { join_if_collinear(joined.local(), x.info(), y.info()); });
+  std::vector<Key>().swap(filed);
+  if (!uncertain.empty())
+    parallel_chunks(n, 4096, [&](const auto& range) {
+      Joined& mine = joined.local();
+      for (std::uint32_t i = std::uint32_t(range.begin()); i != range.end(); ++i)
+        if (!lines.lines[i].pieces.empty())
+          box_grid.query(images[i].bbox(), [&](std::uint32_t j) { join_if_collinear(mine, i, j); });
+    });
   UnionFind groups(n);
-  for (const auto& pairs : chunk_pairs)
-    for (const auto& [i, j] : pairs) groups.join(i, j);
+  for (const Joined& mine : joined)
+    for (const auto& [i, j] : mine.pairs) groups.join(i, j);
   std::vector<std::int32_t> group_of_root(n, -1);
   std::vector<std::vector<std::uint32_t>> group_spans;  // span indices, in span order
   for (std::uint32_t s = 0; s < spans.size(); ++s) {

@@ -2,6 +2,7 @@
 // the B-rep's shared edges and vertices, go through kernel's make_mesh like any mesh.
 #include "file_names.hpp"
 #include "occ_module.hpp"
+#include "planar_mesh.hpp"
 
 #include <hlr/cad/cad.hpp>
 #include <hlr/kernel/mesh_edges.hpp>  // UnionFind: its root is the lowest node
@@ -10,6 +11,8 @@
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepLib.hxx>
+#include <BRepMesh_Context.hxx>
+#include <BRepMesh_FaceDiscret.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -456,8 +459,16 @@ std::vector<CadPart> read_model(const std::string& path, const CadOptions& optio
     BRepTools::Clean(b.shape);  // a .brep's own triangulation would stand in for the deflection
     // Faces are meshed in parallel on oneTBB, within the run's --threads; each face's triangles
     // depend only on its own boundary, so the result is the same for any number of threads.
-    BRepMesh_IncrementalMesh mesher(b.shape, deflection, Standard_False, options.angular_degrees * std::numbers::pi / 180.0,
-                                    Standard_True);
+    // Planar faces are triangulated by planar_mesh.hpp.
+    BRepMesh_IncrementalMesh mesher;
+    mesher.SetShape(b.shape);
+    IMeshTools_Parameters& parameters = mesher.ChangeParameters();
+    parameters.Deflection = deflection;
+    parameters.Angle = options.angular_degrees * std::numbers::pi / 180.0;
+    parameters.InParallel = Standard_True;
+    Handle(IMeshTools_Context) context = new BRepMesh_Context;
+    context->SetFaceDiscret(new BRepMesh_FaceDiscret(new PlanarFirstMeshAlgoFactory));
+    mesher.Perform(context);
     if (!mesher.IsDone()) throw ImportError(path + ": the tessellation failed (BRepMesh did not finish)");
     const std::vector<TopoDS_Shape> split = split_bodies(b.shape);
     for (std::size_t i = 0; i < split.size(); ++i) {

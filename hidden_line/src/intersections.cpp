@@ -383,7 +383,6 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     EK::Point_3 a, b;  // a < b lexicographically
     std::uint32_t face_a, face_b;
     double meeting_degrees;
-    ModelPointRecipe recipe_a{}, recipe_b{};
   };
   auto rough_normal_of = [&](const FaceRef& r) {
     const auto& pv = topo[r.mesh].plane_vertices[r.face];
@@ -427,7 +426,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
           const auto& lo = chords.compare(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
           const auto& hi = chords.compare(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
           if (chords.compare(lo, hi) == CGAL::SMALLER)
-            out.push_back({key, {chords.point(lo), chords.point(hi), f.face, g.face, meeting_degrees, lo.recipe, hi.recipe}});
+            out.push_back({key, {chords.point(lo), chords.point(hi), f.face, g.face, meeting_degrees}});
           continue;
         }
         const EK::Plane_3 pf = plane_of(f), pg = plane_of(g);
@@ -479,13 +478,9 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
         for (std::size_t k = 0; k < list.size();) {
           const Piece& first = *list[k];
           IntersectionSegment s{first.a,          first.b,          std::get<0>(key),      std::get<2>(key),
-                                {first.face_a}, {first.face_b}, first.meeting_degrees, first.recipe_a,
-                                first.recipe_b};
+                                {first.face_a}, {first.face_b}, first.meeting_degrees};
           for (++k; k < list.size() && compare_points(list[k]->a, s.b) != CGAL::LARGER; ++k) {
-            if (compare_points(list[k]->b, s.b) == CGAL::LARGER) {
-              s.b = list[k]->b;
-              s.recipe_b = list[k]->recipe_b;
-            }
+            if (compare_points(list[k]->b, s.b) == CGAL::LARGER) s.b = list[k]->b;
             s.faces_a.push_back(list[k]->face_a);
             s.faces_b.push_back(list[k]->face_b);
           }

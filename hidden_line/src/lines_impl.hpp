@@ -720,7 +720,7 @@ ViewEnds<K> view_ends_of(const ViewFrame<K>& frame, const std::vector<Intersecti
       const IntersectionSegment& s = segments[first / 2];
       const ViewPoint<K> point = frame.to_view(first % 2 == 0 ? s.a : s.b);
       std::optional<std::array<double, 3>> rounded;
-      if (rounds) rounded = rounding.nearest(first % 2 == 0 ? s.recipe_a : s.recipe_b);
+      if (rounds) rounded = rounding.nearest(recipe_of(first % 2 == 0 ? s.a : s.b));
       for (std::size_t k = firsts[r]; k != firsts[r + 1]; ++k) {
         out.points[ends[k].second] = point;
         if (rounds) out.rounded[ends[k].second] = rounded;

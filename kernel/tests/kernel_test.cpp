@@ -491,5 +491,23 @@ TEST(ExactOutput, LazyPointIsTheEpeckCrossing) {
   EXPECT_GT(checked, 1000);
 }
 
+// The recipe read back from a point: a lazy point's own, an input point's doubles, and nothing for
+// a point CGAL constructed, which output rounds the general way.
+TEST(ExactOutput, RecipeOfReadsBackHowThePointWasMade) {
+  using K = ExactKernel;
+  const ModelPointRecipe r{ModelPointRecipe::Kind::edge_crossing, {0, 0, -1}, {0, 0, 2}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const ModelPointRecipe made = recipe_of(lazy_point(r, {CGAL::Interval_nt<false>(0), 0, 0}));
+  EXPECT_EQ(made.kind, r.kind);
+  for (const auto& [x, y] : {std::pair{made.u, r.u}, {made.w, r.w}, {made.a, r.a}, {made.b, r.b}, {made.c, r.c}})
+    EXPECT_EQ(x, y);
+  const ModelPointRecipe input = recipe_of(K::Point_3(0.1, -2.5, 1e300));
+  EXPECT_EQ(input.kind, ModelPointRecipe::Kind::input_point);
+  EXPECT_EQ(input.u, (Vec3{0.1, -2.5, 1e300}));
+  EXPECT_EQ(recipe_of(CGAL::midpoint(K::Point_3(0, 0, 0), K::Point_3(0.1, 0, 0))).kind, ModelPointRecipe::Kind::input_point)
+      << "halving a double is exact: the constructed midpoint's intervals are single doubles";
+  EXPECT_EQ(recipe_of(K::Point_3(0, 0, 0) + (K::Point_3(1, 0, 0) - K::Point_3(0, 0, 0)) / 3).kind,
+            ModelPointRecipe::Kind::unknown);
+}
+
 }  // namespace
 }  // namespace hlr

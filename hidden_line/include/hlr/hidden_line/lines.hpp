@@ -43,8 +43,8 @@ struct IntersectionSegment {
   // The angle between the two planes in degrees, in (0, 90], rounded: not a decision of the exact
   // path, but what drawings use to leave out the contact lines of nearly tangent surfaces.
   double meeting_degrees = 90;
-  // How a and b were built from the input, for their rounding in output (kernel/exact_output.hpp).
-  ModelPointRecipe recipe_a, recipe_b;
+  // How a and b were built from the input, for their rounding in output, is kept in the points
+  // themselves (recipe_of, kernel/exact_output.hpp).
 };
 
 // Throws Cancelled when `stop` asks (polled between candidate face pairs).

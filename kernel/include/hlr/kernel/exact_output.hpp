@@ -70,6 +70,7 @@ class RecipePointRep final : public LazyPoint3 {
     this->set_at(exact);
     this->set_ptr(exact);
   }
+  const ModelPointRecipe& recipe() const { return recipe_; }
 
  private:
   ModelPointRecipe recipe_;
@@ -82,6 +83,19 @@ class RecipePointRep final : public LazyPoint3 {
 inline ExactKernel::Point_3 lazy_point(const ModelPointRecipe& recipe,
                                        const std::array<CGAL::Interval_nt<false>, 3>& approx) {
   return ExactKernel::Point_3(ExactKernel::Point_3::Rep(new exact_output_detail::RecipePointRep(recipe, approx)));
+}
+
+// How `p` was built, read back from the point itself, so that nothing else need keep it: a
+// lazy_point's recipe; an input point where every interval is a single double (an interval holds
+// the exact value, so that double is the coordinate); else unknown.
+inline ModelPointRecipe recipe_of(const ExactKernel::Point_3& p) {
+  // CGAL's Lazy keeps its rep pointer private; Handle hands it out untyped (for Compact_container).
+  const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(p).for_compact_container());
+  if (const auto* made = dynamic_cast<const exact_output_detail::RecipePointRep*>(rep)) return made->recipe();
+  const auto& a = p.approx();
+  for (int k = 0; k < 3; ++k)
+    if (a[k].inf() != a[k].sup()) return {};
+  return {ModelPointRecipe::Kind::input_point, Vec3{a[0].inf(), a[1].inf(), a[2].inf()}};
 }
 
 // The double nearest to num / den, ties to the lower one (as Geometry::to_double rounds); nothing

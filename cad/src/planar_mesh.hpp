@@ -16,7 +16,8 @@ namespace hlr::cad {
 
 class PlanarFirstMeshAlgoFactory : public IMeshTools_MeshAlgoFactory {
  public:
-  Handle(IMeshTools_MeshAlgo) GetAlgo(const GeomAbs_SurfaceType type, const IMeshTools_Parameters& parameters) const override;
+  Handle(IMeshTools_MeshAlgo) GetAlgo(const GeomAbs_SurfaceType type,
+                                      const IMeshTools_Parameters& parameters) const override;
 };
 
 }  // namespace hlr::cad

@@ -4,13 +4,13 @@
 // penetration search's faces, precedence's line keys).
 //
 // LooseGrid: for the area sort (whose pieces come and go), line classification and precedence.
-// Queries do not change it, so threads may share it.
-// A loose multi-level grid: level l splits the domain into 2^l x 2^l cells, and a box is filed once,
-// at the finest level whose cells are at least as large as the box, in the cell of its centre; so
-// inserting costs O(1) whatever the box's size, and a query looks at the cells of each level that
-// can hold a box reaching into it (its own, widened by three quarters of a cell). Boxes are
-// conservative (interval bounds of exact points) and the widening leaves room for rounding, so a
-// query never misses a box that overlaps; it only filters, it decides nothing.
+// Queries do not change it, so threads may share it. A loose multi-level grid: level l splits the
+// domain into 2^l x 2^l cells, and a box is filed once, at the finest level whose cells are at
+// least as large as the box, in the cell of its centre; so inserting costs O(1) whatever the box's
+// size, and a query looks at the cells of each level that can hold a box reaching into it (its
+// own, widened by three quarters of a cell). Boxes are conservative (interval bounds of exact
+// points) and the widening leaves room for rounding, so a query never misses a box that overlaps;
+// it only filters, it decides nothing.
 #pragma once
 
 #include <hlr/clipper/clipper.hpp>

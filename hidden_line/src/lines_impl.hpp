@@ -1043,10 +1043,10 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     return !(std::abs(u.x * v.y - u.y * v.x) > u.error + v.error) && collinear_lines(i, j);
   };
   // Only lines whose boxes overlap are joined (their spans may interact); every line is asked
-  // against the uncertain lines whose boxes overlap its own. The groups are the
-  // components of that relation, so a pair already in one group needs no test: thousands of
-  // lines on one image line are then joined by about as many tests, not by all their pairs.
-  // Each thread keeps its own groups, and the pairs it joined; those pairs then make the groups.
+  // against the uncertain lines whose boxes overlap its own. The groups are the components of
+  // that relation, so a pair already in one group needs no test: thousands of lines on one image
+  // line are then joined by about as many tests, not by all their pairs. Each thread keeps its
+  // own groups, and the pairs it joined; those pairs then make the groups.
   struct Joined {
     std::optional<UnionFind> groups;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -1056,13 +1056,15 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   auto join_if_collinear = [&](Joined& mine, std::uint32_t i, std::uint32_t j) {
     stop.check_every(mine.polls, 4096);
     if (!mine.groups) mine.groups.emplace(n);
-    if (i != j && mine.groups->find(i) != mine.groups->find(j) && CGAL::do_overlap(images[i].bbox(), images[j].bbox()) &&
-        maybe_collinear(i, j)) {
+    if (i != j && mine.groups->find(i) != mine.groups->find(j) &&
+        CGAL::do_overlap(images[i].bbox(), images[j].bbox()) && maybe_collinear(i, j)) {
       mine.groups->join(i, j);
       mine.pairs.emplace_back(i, j);
     }
   };
-  detail::overlapping_box_pairs(filed, 2, [&](const Key& x, const Key& y) { join_if_collinear(joined.local(), x.info(), y.info()); });
+  detail::overlapping_box_pairs(filed, 2, [&](const Key& x, const Key& y) {
+    join_if_collinear(joined.local(), x.info(), y.info());
+  });
   std::vector<Key>().swap(filed);
   if (!uncertain.empty())
     parallel_chunks(n, 4096, [&](const auto& range) {

@@ -30,15 +30,16 @@ using FaceBase = CGAL::Constrained_triangulation_face_base_2<
 using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<
     Kernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>, CGAL::No_constraint_intersection_tag>;
 
-bool has_internal_vertices(const TopoDS_Face& face) {
+// Vertices or edges inside the face, off its boundary wires: BRepMesh's own algorithm takes them.
+bool has_inner_parts(const TopoDS_Face& face) {
   for (TopExp_Explorer e(face, TopAbs_VERTEX, TopAbs_EDGE); e.More(); e.Next()) return true;
   for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
     if (e.Current().Orientation() == TopAbs_INTERNAL || e.Current().Orientation() == TopAbs_EXTERNAL) return true;
   return false;
 }
 
-// Each face's depth in the nesting of the boundary's loops, from the outside (0): the face is in
-// the face's domain where the depth is odd (CGAL's polygon-with-holes triangulation example).
+// Each triangle's depth in the nesting of the boundary's loops, from the outside (0): a triangle
+// with an odd depth is inside the B-rep face (as in CGAL's polygon-with-holes example).
 void mark_depths(Triangulation& t) {
   for (auto f = t.all_faces_begin(); f != t.all_faces_end(); ++f) f->info() = -1;
   std::deque<std::pair<Triangulation::Face_handle, int>> seeds{{t.infinite_face(), 0}};
@@ -69,7 +70,7 @@ class PlanarFaceAlgo : public BRepMesh_DelaunayBaseMeshAlgo {
  public:
   void Perform(const IMeshData::IFaceHandle& face, const IMeshTools_Parameters& parameters,
                const Message_ProgressRange& range) override {
-    if (has_internal_vertices(face->GetFace())) {
+    if (has_inner_parts(face->GetFace())) {
       BRepMesh_MeshAlgoFactory().GetAlgo(GeomAbs_Plane, parameters)->Perform(face, parameters, range);
       return;
     }

@@ -7,7 +7,8 @@
 // boundary (the nodes and links BRepMesh put on the face's edges, shared with the neighbouring
 // faces) is kept as it is; only the triangles inside it are made here. A face whose boundary the
 // constrained triangulation cannot take as it is (constraints that cross or pass through another
-// node, two nodes at one point) and a face with internal vertices go to BRepMesh's own algorithm.
+// node, two nodes at one point) and a face with vertices or edges inside it go to BRepMesh's own
+// algorithm.
 #pragma once
 
 #include <IMeshTools_MeshAlgoFactory.hxx>

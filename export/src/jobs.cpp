@@ -27,10 +27,7 @@ hidden_line::LineOptions line_options(const DrawOptions& options) {
 // vertices' image points alone.
 template <class K>
 void release_all_but_image_points(hidden_line::Sources<K>& sources) {
-  auto& polygons = sources.polygons;
-  hidden_line::parallel_chunks(polygons.size(), 4096, [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) polygons[i] = {};
-  });
+  hidden_line::free_in_parallel(sources.polygons);
   hidden_line::Sources<K> rest;
   rest.image_points = std::move(sources.image_points);
   rest.stats = sources.stats;

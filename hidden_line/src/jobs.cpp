@@ -17,12 +17,7 @@ const std::vector<IntersectionSegment>& SceneIntersections::segments() const {
   return segments_;
 }
 
-void SceneIntersections::release() {
-  parallel_chunks(segments_.size(), 4096, [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) segments_[i] = {};
-  });
-  std::vector<IntersectionSegment>().swap(segments_);
-}
+void SceneIntersections::release() { free_in_parallel(segments_); }
 
 UserError inexact_kernel_failure(const Scene& scene, KernelKind kind, const std::exception& e) {
   return UserError(scene.input.files.empty() ? std::string("scene") : scene.input.files.front(),

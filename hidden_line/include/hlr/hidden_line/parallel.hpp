@@ -10,6 +10,7 @@
 #include <tbb/partitioner.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace hlr::hidden_line {
 
@@ -18,6 +19,16 @@ void parallel_chunks(std::size_t size, std::size_t grain, const Body& body) {
   const tbb::blocked_range<std::size_t> all(0, size, grain);
   if (size <= grain) body(all);
   else tbb::parallel_for(all, body, tbb::simple_partitioner());
+}
+
+// Empties `v` and frees its memory, the elements on every thread: a large stage's data (lazy
+// exact numbers by the million) takes a while to free on one.
+template <class T>
+void free_in_parallel(std::vector<T>& v) {
+  parallel_chunks(v.size(), 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) v[i] = {};
+  });
+  std::vector<T>().swap(v);
 }
 
 }  // namespace hlr::hidden_line

@@ -1017,25 +1017,29 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   parallel_chunks(n, 4096, [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) file(std::uint32_t(i));
   });
+  // The keys of lines with a certain direction, moved to the front of `keys`, then their mirrors.
   std::vector<std::uint32_t> uncertain;
   CGAL::Bbox_2 box_domain;
-  std::vector<Key> filed;
+  std::vector<Key> mirrored;
+  std::size_t filed = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
     if (is_uncertain[i]) {
       uncertain.push_back(i);
       box_domain += images[i].bbox();
     } else if (directions[i].error != HUGE_VAL) {
-      const Key& k = keys[i];
-      filed.push_back(k);
+      const Key k = keys[filed++] = keys[i];
       if (k.max_coord(0) >= kHalfTurn / 2 || k.min_coord(0) <= -kHalfTurn / 2) {
         // The same line seen the other way: the angle a half turn on, offset and position negated.
         const double shift = k.max_coord(0) > kHalfTurn / 2 ? -kHalfTurn : kHalfTurn;
         double lo[3] = {k.min_coord(0) + shift, -k.max_coord(1), -k.max_coord(2)};
         double hi[3] = {k.max_coord(0) + shift, -k.min_coord(1), -k.min_coord(2)};
-        filed.push_back(Key(lo, hi, i));
+        mirrored.push_back(Key(lo, hi, i));
       }
     }
   }
+  keys.resize(filed);
+  keys.insert(keys.end(), mirrored.begin(), mirrored.end());
+  std::vector<Key>().swap(mirrored);
   detail::LooseGrid box_grid(box_domain, uncertain.size());
   for (std::uint32_t i : uncertain) box_grid.insert(i, images[i].bbox());
   auto maybe_collinear = [&](std::uint32_t i, std::uint32_t j) {
@@ -1062,10 +1066,10 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       mine.pairs.emplace_back(i, j);
     }
   };
-  detail::overlapping_box_pairs(filed, 2, [&](const Key& x, const Key& y) {
+  detail::overlapping_box_pairs(keys, 2, [&](const Key& x, const Key& y) {
     join_if_collinear(joined.local(), x.info(), y.info());
   });
-  std::vector<Key>().swap(filed);
+  std::vector<Key>().swap(keys);
   if (!uncertain.empty())
     parallel_chunks(n, 4096, [&](const auto& range) {
       Joined& mine = joined.local();

@@ -144,26 +144,51 @@ struct InputEdge {
   LineId line_at_a = 0, line_at_b = 0;  // the lines of the contour's edges before and after this one
 };
 
-// Calls visit(i, j) for every pair of edges whose boxes overlap (sweep over x).
-template <class Visit>
-void for_each_overlapping_pair(const std::vector<InputEdge>& edges, std::vector<std::uint32_t>& order,
-                               Visit&& visit) {
-  order.resize(edges.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t i, std::uint32_t j) {
-              const double a = edges[i].box.xmin(), b = edges[j].box.xmin();
-              return a != b ? a < b : i < j;
-            });
-  for (std::size_t s = 0; s < order.size(); ++s) {
-    const InputEdge& e = edges[order[s]];
-    for (std::size_t t = s + 1; t < order.size(); ++t) {
-      const InputEdge& f = edges[order[t]];
-      if (f.box.xmin() > e.box.xmax()) break;
-      if (f.box.ymin() <= e.box.ymax() && e.box.ymin() <= f.box.ymax()) visit(order[s], order[t]);
+// An edge's box as the sweep reads it: the boxes sit side by side in x order, so the inner loop
+// reads memory in sequence instead of following indices into the edges.
+struct SweepBox {
+  double xmin, xmax, ymin, ymax;
+  std::uint32_t group;  // the edge's role and contour
+  std::uint32_t index;  // into the edges
+};
+
+// Calls visit(i, j) for every pair of edges whose boxes overlap (sweep over x), in the order of
+// their smaller x. With `across_contours_only`, pairs of edges of one contour are not visited.
+template <bool across_contours_only, class Visit>
+void for_each_overlapping_pair(const std::vector<InputEdge>& edges, std::vector<SweepBox>& sweep, Visit&& visit) {
+  sweep.clear();
+  sweep.reserve(edges.size());
+  for (std::uint32_t i = 0; i < edges.size(); ++i) {
+    const InputEdge& e = edges[i];
+    sweep.push_back({e.box.xmin(), e.box.xmax(), e.box.ymin(), e.box.ymax(), (std::uint32_t(e.role) << 31) | e.contour, i});
+  }
+  std::sort(sweep.begin(), sweep.end(),
+            [](const SweepBox& a, const SweepBox& b) { return a.xmin != b.xmin ? a.xmin < b.xmin : a.index < b.index; });
+  const std::size_t n = sweep.size();
+  for (std::size_t s = 0; s < n; ++s) {
+    const SweepBox& e = sweep[s];
+    for (std::size_t t = s + 1; t < n; ++t) {
+      const SweepBox& f = sweep[t];
+      if (f.xmin > e.xmax) break;
+      if (across_contours_only && f.group == e.group) continue;
+      if (f.ymin <= e.ymax && e.ymin <= f.ymax) visit(e.index, f.index);
     }
   }
 }
+
+// Union-find over graph edges.
+struct Groups {
+  std::vector<std::uint32_t> parent;
+  void reset(std::size_t n) {
+    parent.resize(n);
+    std::iota(parent.begin(), parent.end(), 0u);
+  }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
+};
 
 // An undirected edge of the overlay, stored from its lower vertex (lo) to its higher one (hi).
 struct GraphEdge {
@@ -183,6 +208,8 @@ class Overlay {
  public:
   ClipResult<K> run(const Polygon<K>& subject, const ClipRegion<K>& clip);
   std::vector<Polygon<K>> merge(std::span<const Contour<K>> pieces, const LineTable<K>& lines);
+  // Lets go of the points of the last run; the buffers keep their capacity unless it grew large.
+  void release();
 
  private:
   void add_polygon(const Polygon<K>& polygon, std::uint8_t role, const CGAL::Bbox_2* filter);
@@ -207,6 +234,7 @@ class Overlay {
   std::vector<P> raw_;                 // input vertices, then constructed intersections
   std::vector<InputEdge> edges_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> splits_;  // (edge, raw point) on its interior
+  std::vector<SweepBox> sweep_;
   std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> canon_;   // raw point -> vertex
   std::vector<P> vertices_;
@@ -221,6 +249,12 @@ class Overlay {
   std::vector<std::uint32_t> ring_start_, ring_, pos_;  // half-edges around each vertex, CCW
   std::vector<std::uint8_t> upper_;                    // per half-edge: points into the upper half-plane
   std::vector<std::uint8_t> result_;   // per half-edge: bit 0 inside list, bit 1 outside list
+  // Working memory of single steps, kept for its capacity.
+  std::vector<std::uint32_t> scratch_;
+  Groups groups_;
+  std::vector<std::int8_t> group_value_;
+  std::vector<std::int32_t> on_path_;
+  std::vector<std::uint8_t> used_;
 };
 
 template <class K>
@@ -249,8 +283,6 @@ template <class K>
 void Overlay<K>::test_pair(std::uint32_t i, std::uint32_t j) {
   const InputEdge& e = edges_[i];
   const InputEdge& f = edges_[j];
-  // A valid contour is simple: its own edges meet only at shared vertices.
-  if (e.role == f.role && e.contour == f.contour) return;
   const P& p1 = raw_[e.a];
   const P& p2 = raw_[e.b];
   const P& q1 = raw_[f.a];
@@ -293,7 +325,8 @@ void Overlay<K>::test_pair(std::uint32_t i, std::uint32_t j) {
 
 template <class K>
 void Overlay<K>::intersect_edges() {
-  for_each_overlapping_pair(edges_, order_, [&](std::uint32_t i, std::uint32_t j) { test_pair(i, j); });
+  // A valid contour is simple: its own edges meet only at shared vertices.
+  for_each_overlapping_pair<true>(edges_, sweep_, [&](std::uint32_t i, std::uint32_t j) { test_pair(i, j); });
 }
 
 // Merges coincident points, cuts every edge at its split points and merges coincident pieces.
@@ -315,7 +348,7 @@ void Overlay<K>::build_graph() {
   // 2. pieces: each edge cut at its split points, in order along the edge.
   std::sort(splits_.begin(), splits_.end());
   pieces_.clear();
-  std::vector<std::uint32_t> cuts;
+  std::vector<std::uint32_t>& cuts = scratch_;
   std::size_t s = 0;
   for (std::uint32_t i = 0; i < edges_.size(); ++i) {
     const InputEdge& e = edges_[i];
@@ -358,7 +391,8 @@ void Overlay<K>::sort_rings() {
   }
   for (std::uint32_t v = 0; v < nv; ++v) ring_start_[v + 1] += ring_start_[v];
   ring_.resize(2 * graph_.size());
-  std::vector<std::uint32_t> fill(ring_start_.begin(), ring_start_.end() - 1);
+  std::vector<std::uint32_t>& fill = scratch_;
+  fill.assign(ring_start_.begin(), ring_start_.end() - 1);
   for (std::uint32_t he = 0; he < 2 * graph_.size(); ++he) ring_[fill[origin(he)]++] = he;
 
   pos_.resize(2 * graph_.size());
@@ -384,20 +418,6 @@ void Overlay<K>::sort_rings() {
   }
 }
 
-// Union-find over graph edges.
-struct Groups {
-  std::vector<std::uint32_t> parent;
-  void reset(std::size_t n) {
-    parent.resize(n);
-    std::iota(parent.begin(), parent.end(), 0u);
-  }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-};
-
 // Decides, for every graph edge, whether `polygon` (the one of `role`) lies on its left and right.
 template <class K>
 void Overlay<K>::classify(int role, const Polygon<K>& polygon) {
@@ -411,7 +431,7 @@ void Overlay<K>::classify(int role, const Polygon<K>& polygon) {
   }
   // Around a vertex on the polygon's boundary, membership changes only across its boundary edges:
   // the sector counter-clockwise of an outgoing boundary edge is inside.
-  Groups groups;
+  Groups& groups = groups_;
   groups.reset(graph_.size());
   for (std::uint32_t v = 0; v < nv; ++v) {
     const std::uint32_t first = ring_start_[v], last = ring_start_[v + 1], deg = last - first;
@@ -446,7 +466,8 @@ void Overlay<K>::classify(int role, const Polygon<K>& polygon) {
     }
   }
   // Edges that never meet the boundary: one group shares one answer.
-  std::vector<std::int8_t> group_value(graph_.size(), -1);
+  std::vector<std::int8_t>& group_value = group_value_;
+  group_value.assign(graph_.size(), -1);
   for (std::uint32_t k = 0; k < graph_.size(); ++k)
     if (graph_[k].left[role] >= 0 && graph_[k].net[role] == 0) group_value[groups.find(k)] = graph_[k].left[role];
   for (std::uint32_t k = 0; k < graph_.size(); ++k) {
@@ -468,9 +489,11 @@ void Overlay<K>::classify(int role, const Polygon<K>& polygon) {
 template <class K>
 std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
   std::vector<Contour<K>> outers, holes;
-  std::vector<std::int32_t> on_path(vertices_.size(), -1);
-  std::vector<std::uint32_t> path;  // half-edges of the walk so far
-  std::vector<std::uint8_t> used(result_.size(), 0);
+  std::vector<std::int32_t>& on_path = on_path_;
+  on_path.assign(vertices_.size(), -1);
+  std::vector<std::uint32_t>& path = scratch_;  // half-edges of the walk so far
+  std::vector<std::uint8_t>& used = used_;
+  used.assign(result_.size(), 0);
 
   auto emit = [&](std::size_t from) {
     Contour<K> c;
@@ -625,12 +648,36 @@ std::vector<Polygon<K>> Overlay<K>::merge(std::span<const Contour<K>> pieces, co
   return trace(1);
 }
 
+template <class K>
+void Overlay<K>::release() {
+  // Past this many input points a buffer is returned rather than kept for the next call.
+  constexpr std::size_t kept_points = std::size_t{1} << 16;
+  if (raw_.capacity() > kept_points) {
+    *this = Overlay();
+    return;
+  }
+  raw_.clear();
+  vertices_.clear();
+}
+
+// Calls use(overlay) with this thread's overlay. Its buffers outlive the call, so a clip allocates
+// little more than its result: small clips (the area sort's triangles) would otherwise spend a
+// third of their time in malloc and free.
+template <class K, class Use>
+decltype(auto) with_overlay(Use&& use) {
+  thread_local Overlay<K> overlay;
+  struct Release {
+    Overlay<K>& overlay;
+    ~Release() { overlay.release(); }
+  } release{overlay};
+  return use(overlay);
+}
+
 }  // namespace detail
 
 template <class K>
 std::vector<Polygon<K>> merge_polygons(std::span<const Contour<K>> pieces, const LineTable<K>& lines) {
-  detail::Overlay<K> overlay;
-  return overlay.merge(pieces, lines);
+  return detail::with_overlay<K>([&](detail::Overlay<K>& overlay) { return overlay.merge(pieces, lines); });
 }
 
 template <class K>
@@ -662,17 +709,17 @@ const Polygon<K>& ClipRegion<K>::polygon() const {
 
 template <class K>
 ClipResult<K> clip_polygon(const Polygon<K>& subject, const ClipRegion<K>& clip) {
-  detail::Overlay<K> overlay;
-  return overlay.run(subject, clip);
+  return detail::with_overlay<K>([&](detail::Overlay<K>& overlay) { return overlay.run(subject, clip); });
 }
 
 template <class K>
 std::vector<ClipResult<K>> clip_list(std::span<const Polygon<K>> subjects, const ClipRegion<K>& clip) {
-  detail::Overlay<K> overlay;  // its buffers are reused from subject to subject
-  std::vector<ClipResult<K>> results;
-  results.reserve(subjects.size());
-  for (const Polygon<K>& s : subjects) results.push_back(overlay.run(s, clip));
-  return results;
+  return detail::with_overlay<K>([&](detail::Overlay<K>& overlay) {
+    std::vector<ClipResult<K>> results;
+    results.reserve(subjects.size());
+    for (const Polygon<K>& s : subjects) results.push_back(overlay.run(s, clip));
+    return results;
+  });
 }
 
 template <class K>

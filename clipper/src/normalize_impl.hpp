@@ -126,8 +126,8 @@ std::optional<std::string> normalize_polygon(Polygon<K>& polygon) {
   }
   std::optional<std::string> defect;
   auto edge_name = [&](const detail::InputEdge& e) { return std::to_string(original[e.contour][e.line]); };
-  std::vector<std::uint32_t> order;
-  detail::for_each_overlapping_pair(edges, order, [&](std::uint32_t i, std::uint32_t j) {
+  std::vector<detail::SweepBox> sweep;
+  detail::for_each_overlapping_pair<false>(edges, sweep, [&](std::uint32_t i, std::uint32_t j) {
     if (defect) return;
     const detail::InputEdge& e = edges[i];
     const detail::InputEdge& f = edges[j];

@@ -1057,10 +1057,15 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     std::size_t polls = 0;
   };
   tbb::enumerable_thread_specific<Joined> joined;
-  auto join_if_collinear = [&](Joined& mine, std::uint32_t i, std::uint32_t j) {
+  // The double kernel's orientation is not transitive, nor symmetric in the two lines: there every
+  // candidate pair is tested, in one order, so that the groups do not depend on which thread
+  // meets which pair first.
+  constexpr bool transitive = !std::is_same_v<K, DoubleKernel>;
+  auto join_if_collinear = [&](Joined& mine, std::uint32_t a, std::uint32_t b) {
     stop.check_every(mine.polls, 4096);
     if (!mine.groups) mine.groups.emplace(n);
-    if (i != j && mine.groups->find(i) != mine.groups->find(j) &&
+    const std::uint32_t i = std::min(a, b), j = std::max(a, b);
+    if (i != j && (!transitive || mine.groups->find(i) != mine.groups->find(j)) &&
         CGAL::do_overlap(images[i].bbox(), images[j].bbox()) && maybe_collinear(i, j)) {
       mine.groups->join(i, j);
       mine.pairs.emplace_back(i, j);

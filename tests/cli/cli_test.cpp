@@ -670,15 +670,16 @@ class CliDraw : public CliClip {
     EXPECT_EQ(run.err.rfind(prefix, 0), 0u) << run.err;
     EXPECT_TRUE(entries(dir_ / "out").empty()) << run.err;
   }
+  // An hlr-lines/1 document but for its timings.
+  static json without_times(json doc) {
+    doc.at("stats").erase("seconds");
+    doc.at("stats").erase("stage_seconds");
+    return doc;
+  }
 };
 
 TEST_F(CliDraw, OneThreadAndTwoDrawTheSameBytes) {
   // Every fixture in two views: the SVG and DXF byte for byte, the JSON but for its timings.
-  auto without_times = [](json doc) {
-    doc.at("stats").erase("seconds");
-    doc.at("stats").erase("stage_seconds");
-    return doc;
-  };
   std::size_t files = 0;
   for (const auto& entry : fs::directory_iterator(kScenes)) {
     if (entry.path().extension() != ".off") continue;
@@ -712,6 +713,52 @@ TEST_F(CliDraw, OneThreadAndTwoDrawTheSameBytesInStrips) {
     ASSERT_EQ(run.exit_code, 0) << run.err;
   }
   EXPECT_EQ(slurp(out("e1.svg")), slurp(out("e2.svg")));
+}
+
+TEST_F(CliDraw, AnotherMachineDrawsTheSameBytes) {
+  // What changes between two machines of one architecture: the number of cores (so the default
+  // --threads), the locale, the time zone, the folder a command runs in. Addresses change from run
+  // to run anyway. The views: a general direction and a perspective write view matrices of their
+  // own (world_to_view), the double kernel decides precedence in double.
+  const fs::path elephant = fs::path(HLR_SHARED_SCENES) / "refined_elephant.off";
+  const std::string bracket = (kScenes / "l_bracket.off").string();
+  std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"perspective", {bracket, "--eye", "8,-6,5", "--target", "1.5,1,1.5"}},
+      {"general", {bracket, "--dir", "0.3,-1.7,0.9"}}};
+  if (fs::exists(elephant)) {
+    cases.push_back({"elephant_general", {elephant.string(), "--dir", "0.3,-1.7,0.9"}});
+    cases.push_back({"elephant_double", {elephant.string(), "--view", "iso", "--kernel", "double"}});
+  }
+  const fs::path elsewhere = dir_ / "elsewhere";
+  fs::create_directories(elsewhere);
+  for (const auto& [name, args] : cases) {
+    SCOPED_TRACE(name);
+    auto outputs = [&](const std::string& tag) {
+      std::vector<std::string> o;
+      for (const char* ext : {".svg", ".dxf", ".json"}) o.insert(o.end(), {"-o", out(name + tag + ext).string()});
+      return o;
+    };
+    std::vector<std::string> here{"draw"};
+    here.insert(here.end(), args.begin(), args.end());
+    here.insert(here.end(), {"--threads", "2"});
+    for (const auto& o : outputs("_here")) here.push_back(o);
+    const Outcome a = hlr(here);
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    // The other machine: one core and the default thread count, another locale and time zone,
+    // another working folder.
+    std::vector<std::string> there{"/bin/sh", "-c",
+                                   "cd \"$1\" && shift && exec taskset -c 0 env LC_ALL=C.UTF-8 LANG=C.UTF-8 "
+                                   "TZ=Pacific/Chatham \"$@\"",
+                                   "sh", elsewhere.string(), kBinary, "draw"};
+    there.insert(there.end(), args.begin(), args.end());
+    for (const auto& o : outputs("_there")) there.push_back(o);
+    const Outcome b = spawn(there);
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    for (const char* ext : {".svg", ".dxf"})
+      EXPECT_EQ(slurp(out(name + "_here" + ext)), slurp(out(name + "_there" + ext))) << ext;
+    EXPECT_EQ(without_times(json::parse(slurp(out(name + "_here.json")))),
+              without_times(json::parse(slurp(out(name + "_there.json")))));
+  }
 }
 
 TEST_F(CliDraw, PredicateStatsCountTheExactKernelsDecisionsOnlyWhenAsked) {

@@ -280,7 +280,9 @@ class ViewFrame {
   }
   const View& view() const { return view_; }
 
-  // The orthonormal frame in double, row-major 4x4 (the JSON's world_to_view). Perspective:
+  // The orthonormal frame in double, row-major 4x4 (the JSON's world_to_view), from the basis
+  // correctly rounded: an approximation Epeck keeps would depend on what the run had evaluated
+  // exactly, and so on the order in which threads met the work. Perspective:
   // rows [X̂, −X̂·e], [Ŷ, −Ŷ·e], [0, 0, 0, 1], [d̂, −d̂·e], so that a model point as the column
   // (x, y, z, 1), divided by the fourth component of its image, gives the written coordinates.
   std::array<std::array<double, 4>, 4> world_to_view() const {
@@ -288,7 +290,7 @@ class ViewFrame {
     if (!view_.eye) {
       for (int i = 0; i < 3; ++i) {
         const FT* axis = i == 0 ? x_ : i == 1 ? y_ : z_;
-        for (int k = 0; k < 3; ++k) m[i][k] = CGAL::to_double(axis[k]) / scale_[i] + 0.0;  // + 0.0: no -0
+        for (int k = 0; k < 3; ++k) m[i][k] = Geometry<K>::to_double(axis[k]) / scale_[i] + 0.0;  // + 0.0: no -0
       }
       m[3][3] = 1;
       return m;
@@ -296,9 +298,9 @@ class ViewFrame {
     const Vec3& e = *view_.eye;
     double length[3] = {0, 0, 0};
     for (int k = 0; k < 3; ++k) {
-      length[0] += CGAL::to_double(x_[k]) * CGAL::to_double(x_[k]);
-      length[1] += CGAL::to_double(y_[k]) * CGAL::to_double(y_[k]);
-      length[2] += CGAL::to_double(z_[k]) * CGAL::to_double(z_[k]);
+      length[0] += Geometry<K>::to_double(x_[k]) * Geometry<K>::to_double(x_[k]);
+      length[1] += Geometry<K>::to_double(y_[k]) * Geometry<K>::to_double(y_[k]);
+      length[2] += Geometry<K>::to_double(z_[k]) * Geometry<K>::to_double(z_[k]);
     }
     const int row_of_axis[3] = {0, 1, 3};
     for (int i = 0; i < 3; ++i) {
@@ -307,7 +309,7 @@ class ViewFrame {
       double offset = 0;
       auto& row = m[row_of_axis[i]];
       for (int k = 0; k < 3; ++k) {
-        row[k] = sign * CGAL::to_double(axis[k]) / std::sqrt(length[i]) + 0.0;
+        row[k] = sign * Geometry<K>::to_double(axis[k]) / std::sqrt(length[i]) + 0.0;
         offset -= row[k] * e[k];
       }
       row[3] = offset + 0.0;

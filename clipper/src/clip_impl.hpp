@@ -26,6 +26,7 @@
 #pragma once
 
 #include <hlr/clipper/clipper.hpp>
+#include <hlr/kernel/double_orientation.hpp>
 
 #include <algorithm>
 #include <numeric>
@@ -142,6 +143,10 @@ struct InputEdge {
   std::uint32_t contour;
   CGAL::Bbox_2 box;
   LineId line_at_a = 0, line_at_b = 0;  // the lines of the contour's edges before and after this one
+  // The ends' coordinates when both are doubles (exact kernel): the pair test's orientations are
+  // then decided on these, without reading the points' intervals.
+  bool doubles = false;
+  double ax = 0, ay = 0, bx = 0, by = 0;
 };
 
 // An edge's box as the sweep reads it: the boxes sit side by side in x order, so the inner loop
@@ -154,8 +159,14 @@ struct SweepBox {
 
 // Calls visit(i, j) for every pair of edges whose boxes overlap (sweep over x), in the order of
 // their smaller x. With `across_contours_only`, pairs of edges of one contour are not visited.
+struct SweepBuffers {
+  std::vector<SweepBox> boxes;
+  std::vector<std::uint32_t> partners;
+};
+
 template <bool across_contours_only, class Visit>
-void for_each_overlapping_pair(const std::vector<InputEdge>& edges, std::vector<SweepBox>& sweep, Visit&& visit) {
+void for_each_overlapping_pair(const std::vector<InputEdge>& edges, SweepBuffers& buffers, Visit&& visit) {
+  std::vector<SweepBox>& sweep = buffers.boxes;
   sweep.clear();
   sweep.reserve(edges.size());
   for (std::uint32_t i = 0; i < edges.size(); ++i) {
@@ -164,15 +175,21 @@ void for_each_overlapping_pair(const std::vector<InputEdge>& edges, std::vector<
   }
   std::sort(sweep.begin(), sweep.end(),
             [](const SweepBox& a, const SweepBox& b) { return a.xmin != b.xmin ? a.xmin < b.xmin : a.index < b.index; });
+  // The partners of one box are gathered without branching on y (which overlaps unpredictably),
+  // then visited.
   const std::size_t n = sweep.size();
+  std::vector<std::uint32_t>& partners = buffers.partners;
+  partners.resize(n);
   for (std::size_t s = 0; s < n; ++s) {
     const SweepBox& e = sweep[s];
+    std::size_t found = 0;
     for (std::size_t t = s + 1; t < n; ++t) {
       const SweepBox& f = sweep[t];
       if (f.xmin > e.xmax) break;
-      if (across_contours_only && f.group == e.group) continue;
-      if (f.ymin <= e.ymax && e.ymin <= f.ymax) visit(e.index, f.index);
+      partners[found] = f.index;
+      found += (f.ymin <= e.ymax) & (e.ymin <= f.ymax) & (!across_contours_only || f.group != e.group);
     }
+    for (std::size_t k = 0; k < found; ++k) visit(e.index, partners[k]);
   }
 }
 
@@ -234,7 +251,7 @@ class Overlay {
   std::vector<P> raw_;                 // input vertices, then constructed intersections
   std::vector<InputEdge> edges_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> splits_;  // (edge, raw point) on its interior
-  std::vector<SweepBox> sweep_;
+  SweepBuffers sweep_;
   std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> canon_;   // raw point -> vertex
   std::vector<P> vertices_;
@@ -268,7 +285,15 @@ void Overlay<K>::add_contour(const Contour<K>& c, std::uint8_t role, std::uint32
     CGAL::Bbox_2 box = G::bbox(c.points[i]) + G::bbox(c.points[j]);
     // A clip edge that cannot reach the subject's box can neither cut it nor bound a result.
     if (filter && !boxes_overlap(box, *filter)) continue;
-    edges_.push_back({base + i, base + j, c.lines[i], role, contour_id, box, c.lines[i == 0 ? n - 1 : i - 1], c.lines[j]});
+    InputEdge& e = edges_.emplace_back(
+        InputEdge{base + i, base + j, c.lines[i], role, contour_id, box, c.lines[i == 0 ? n - 1 : i - 1], c.lines[j]});
+    if constexpr (G::exact_constructions) {
+      const auto &a = CGAL::approx(c.points[i]), &b = CGAL::approx(c.points[j]);
+      if (G::is_double(a) && G::is_double(b)) {
+        e.doubles = true;
+        e.ax = a.x().inf(), e.ay = a.y().inf(), e.bx = b.x().inf(), e.by = b.y().inf();
+      }
+    }
   }
 }
 
@@ -287,18 +312,28 @@ void Overlay<K>::test_pair(std::uint32_t i, std::uint32_t j) {
   const P& p2 = raw_[e.b];
   const P& q1 = raw_[f.a];
   const P& q2 = raw_[f.b];
-  // An endpoint lies on its own edge's line and on the line of the edge that meets it there
-  // (corner_on_line); on the exact kernel those orientations are 0 without arithmetic.
-  auto orientation = [](const P& a, const P& b, LineId ab, const InputEdge& other, bool at_b, const P& q) {
-    if constexpr (G::exact_constructions)
-      if (other.line == ab || (at_b ? other.line_at_b : other.line_at_a) == ab) return 0;
+  // The orientation of `other`'s end (a or b) seen from `edge`. An endpoint lies on its own edge's
+  // line and on the line of the edge that meets it there (corner_on_line); on the exact kernel
+  // those orientations are 0 without arithmetic.
+  auto orientation = [](const InputEdge& edge, const P& a, const P& b, const InputEdge& other, bool at_b, const P& q) {
+    if constexpr (G::exact_constructions) {
+      if (other.line == edge.line || (at_b ? other.line_at_b : other.line_at_a) == edge.line) return 0;
+      if (edge.doubles && other.doubles) {
+        const int o = orientation_of_doubles(edge.ax, edge.ay, edge.bx, edge.by, at_b ? other.bx : other.ax,
+                                             at_b ? other.by : other.ay);
+        if (o != 2) {
+          PredicateStats::add(PredicateFamily::orientation, DecidedBy::interval);
+          return o;
+        }
+      }
+    }
     return G::orientation(a, b, q);
   };
-  const int o1 = orientation(p1, p2, e.line, f, false, q1);
-  const int o2 = orientation(p1, p2, e.line, f, true, q2);
+  const int o1 = orientation(e, p1, p2, f, false, q1);
+  const int o2 = orientation(e, p1, p2, f, true, q2);
   if (o1 * o2 > 0) return;
-  const int o3 = orientation(q1, q2, f.line, e, false, p1);
-  const int o4 = orientation(q1, q2, f.line, e, true, p2);
+  const int o3 = orientation(f, q1, q2, e, false, p1);
+  const int o4 = orientation(f, q1, q2, e, true, p2);
   if (o3 * o4 > 0) return;
   if (o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0) {
     if (e.role == f.role) throw ClipError("contours of one polygon cross each other");

@@ -126,7 +126,7 @@ std::optional<std::string> normalize_polygon(Polygon<K>& polygon) {
   }
   std::optional<std::string> defect;
   auto edge_name = [&](const detail::InputEdge& e) { return std::to_string(original[e.contour][e.line]); };
-  std::vector<detail::SweepBox> sweep;
+  detail::SweepBuffers sweep;
   detail::for_each_overlapping_pair<false>(edges, sweep, [&](std::uint32_t i, std::uint32_t j) {
     if (defect) return;
     const detail::InputEdge& e = edges[i];

@@ -1,6 +1,7 @@
 // The traits interface answers the same on every kernel where the answer is representable, and
 // the exact kernel keeps what double rounds away.
 #include <hlr/kernel/kernel.hpp>
+#include <hlr/kernel/double_orientation.hpp>
 #include <hlr/kernel/exact_output.hpp>
 #include <hlr/kernel/line_box.hpp>
 #include <hlr/kernel/plane_side.hpp>
@@ -242,6 +243,42 @@ TEST(ExactKernel, PlaneSideIsTheExactOrientation) {
   }
   EXPECT_GT(zeros, 2000u) << "the draws must hit exact zeros";
   EXPECT_GT(ordinary_decided, ordinary * 99 / 100) << "the bound must settle ordinary cases";
+}
+
+// orientation_of_doubles (the clipper's pair test): a decided orientation must be the exact one
+// (in rationals) for points on a line (exact zeros on the grids), an ulp off it, and ordinary ones,
+// with coordinates random, on a coarse grid, far from the origin, of mixed magnitude, and near the
+// ends of the double range where products underflow or overflow; ordinary ones it must settle.
+TEST(ExactKernel, DoubleOrientationFilterIsExactWhereItDecides) {
+  using Q = CGAL::Exact_rational;
+  std::mt19937_64 random(20261206);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  auto value = [&](int mode) {
+    if (mode < 4) return hard_value(random, mode);
+    return unit(random) * (mode == 4 ? 0x1p-520 : 0x1p505);  // products underflow, or pass 2^1000
+  };
+  std::size_t zeros = 0, decided = 0, ordinary = 0, ordinary_decided = 0;
+  for (int i = 0; i < 30000; ++i) {
+    const int mode = i % 6;
+    double a[2] = {value(mode), value(mode)}, b[2] = {value(mode), value(mode)}, c[2] = {value(mode), value(mode)};
+    const int kind = i / 6 % 3;
+    if (kind > 0) {  // on the line ab where the sum is exact (the grids), an ulp off it after
+      c[0] = 2 * b[0] - a[0], c[1] = 2 * b[1] - a[1];
+      if (kind == 2) c[i % 2] = std::nextafter(c[i % 2], HUGE_VAL);
+    }
+    const Q det = (Q(a[0]) - Q(c[0])) * (Q(b[1]) - Q(c[1])) - (Q(a[1]) - Q(c[1])) * (Q(b[0]) - Q(c[0]));
+    const int want = static_cast<int>(CGAL::sign(det));
+    zeros += want == 0;
+    const int got = orientation_of_doubles(a[0], a[1], b[0], b[1], c[0], c[1]);
+    if (got != 2) {
+      ++decided;
+      ASSERT_EQ(got, want) << i;
+    }
+    if (kind == 0 && want != 0 && mode < 4) ++ordinary, ordinary_decided += got != 2;
+  }
+  EXPECT_GT(zeros, 2000u) << "the draws must hit exact zeros";
+  EXPECT_GT(decided, 7000u);
+  EXPECT_GT(ordinary_decided, ordinary * 99 / 100) << "the filter must settle what is far from degenerate";
 }
 
 // The view coordinates of an input point are one lazy number each (view.hpp's RowDotRep): their

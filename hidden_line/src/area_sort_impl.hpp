@@ -205,8 +205,8 @@ class AreaSort {
     cut.source_b = static_cast<std::int32_t>(std::max(s, f));
     const LineOrigin aux;
     std::vector<P> corners;
-    const bool by_x = G::sign(db) != 0 &&
-                      (G::sign(da) == 0 || std::abs(G::rough_double(db)) >= std::abs(G::rough_double(da)));
+    // Decided exactly: on rough doubles a near tie would go by what the run had evaluated before.
+    const bool by_x = G::sign(db) != 0 && (G::sign(da) == 0 || CGAL::compare(CGAL::abs(db), CGAL::abs(da)) != CGAL::SMALLER);
     if (by_x) {
       // The line crosses the verticals x = x0 and x = x1 at y = -(da x + dc) / db.
       const double x0 = widen(box.xmin(), -1), x1 = widen(box.xmax(), 1);

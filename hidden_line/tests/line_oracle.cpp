@@ -237,7 +237,7 @@ std::vector<OracleFeature> oracle_features(const std::vector<Mesh>& meshes, cons
       for (std::size_t i = 0; i < face.size(); ++i) {
         const std::uint32_t p = face[i], q = face[(i + 1) % face.size()];
         edges[{std::min(p, q), std::max(p, q)}].push_back({f, p < q});
-        const bool internal = !mesh.fan_edges.empty() && (mesh.fan_edges[f] >> i & 1u);
+        const bool internal = !mesh.fan_edges.empty() && i < 8 && (mesh.fan_edges[f] >> i & 1u);
         auto [it, first] = fan.try_emplace({std::min(p, q), std::max(p, q)}, internal);
         if (!first) it->second = it->second && internal;
         if (!mesh.source_edges.empty() && i < 4 && (mesh.source_edges[f] >> i & 1u))

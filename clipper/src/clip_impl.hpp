@@ -157,12 +157,13 @@ struct SweepBox {
   std::uint32_t index;  // into the edges
 };
 
-// Calls visit(i, j) for every pair of edges whose boxes overlap (sweep over x), in the order of
-// their smaller x. With `across_contours_only`, pairs of edges of one contour are not visited.
 struct SweepBuffers {
   std::vector<SweepBox> boxes;
   std::vector<std::uint32_t> partners;
 };
+
+// Calls visit(i, j) for every pair of edges whose boxes overlap (sweep over x), in the order of
+// their smaller x. With `across_contours_only`, pairs of edges of one contour are not visited.
 
 template <bool across_contours_only, class Visit>
 void for_each_overlapping_pair(const std::vector<InputEdge>& edges, SweepBuffers& buffers, Visit&& visit) {

@@ -38,9 +38,10 @@ inline std::vector<EdgeUse> edge_uses(const Mesh& mesh) {
     const auto& face = mesh.faces[f];
     for (std::size_t i = 0; i < face.size(); ++i) {
       const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
+      // The per-face bits cover the first 8 (fan) and 4 (source) edges: no shift past them.
       const bool fan = !mesh.fan_edges.empty() && i < 8 && (mesh.fan_edges[f] >> i & 1u);
-      const std::uint8_t bits = mesh.source_edges.empty() || i >= 4 ? 0 : mesh.source_edges[f];
-      const std::uint8_t source = (bits >> i & 1u) ? std::uint8_t(1u | ((bits >> (i + 4) & 1u) << 1)) : 0;
+      const std::uint8_t bits = mesh.source_edges.empty() || i >= 4 ? 0 : mesh.source_edges[f] >> i;
+      const std::uint8_t source = (bits & 1u) ? std::uint8_t(1u | ((bits >> 4 & 1u) << 1)) : 0;
       uses.push_back({edge_key(a, b), f, a < b, fan, source});
       vertices = std::max(vertices, std::max(a, b) + 1);
     }

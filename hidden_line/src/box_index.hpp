@@ -17,7 +17,6 @@
 #include <hlr/hidden_line/parallel.hpp>
 
 #include <CGAL/Bbox_2.h>
-#include <CGAL/box_intersection_d.h>
 
 #include <tbb/global_control.h>
 
@@ -42,47 +41,144 @@ CGAL::Bbox_2 box_of(const clip::Polygon<K>& p) {
   return box_of(p.outer);
 }
 
-// Calls visit(x, y) once for every pair of overlapping boxes (CGAL's box_self_intersection_d),
-// from several threads where more than one is allowed. `boxes` is reordered.
+// Calls visit(x, y) once for every pair of overlapping boxes (closed boxes: touching ones
+// overlap, as in CGAL's box_intersection_d), from several threads where more than one is allowed.
+// Box is a 3D box with min_coord(k) and max_coord(k), such as CGAL's Box_with_info_d.
 //
-// The segment tree scans lists of up to kCutoff boxes directly instead of splitting them further.
-// Mesh faces' boxes overlap their neighbours' in every direction, and CGAL's default of 10 spends
-// most of the search on splitting: with 1,000, finding the 538,234 overlapping pairs of
-// refined_elephant takes 0.11 s instead of 0.32 s (docs/BENCHMARKS.md, "Eighth run").
-//
-// On several threads: slabs across `axis`, searched side by side. CGAL's Parallel_tag runs only
-// the top of its tree in parallel (asm_1M: 4.3 s on one thread, 3.6 s on two). A box goes into
-// every slab its extent meets, and a pair belongs to the slab that holds the larger of the two
-// boxes' lower ends, which both reach: each pair is visited once. Slab bounds are quantiles of
-// the lower ends, so that slabs hold about as many boxes.
+// A sweep along `axis` within columns across the other two axes. A column is about as wide as
+// the median box along each of those axes and holds the boxes that meet it, in the order of their
+// lower ends along `axis`; there a box is tested against those after it until their lower ends
+// pass its upper end. So a box meets a few boxes beside it rather than every box of its slice
+// across the scene, and no tree is built (CGAL's box_self_intersection_d, which this replaced,
+// spent most of its time splitting: refined_elephant's 538,234 pairs took 55 ms there, 18 ms
+// here; docs/BENCHMARKS.md, "Fifteenth run"). A pair is visited in the column that holds the
+// larger of the two boxes' lower corners, which both meet: once. Boxes that meet more than
+// kWideColumns columns (long slivers) are swept apart, against every box. Columns are computed
+// from the boxes' doubles by monotone arithmetic and the overlap test is on the doubles
+// themselves, so no pair is missed or made up.
 template <class Box, class Visit>
-void overlapping_box_pairs(std::vector<Box>& boxes, int axis, Visit&& visit) {
-  constexpr std::ptrdiff_t kCutoff = 1000;
-  const auto threads = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
-  if (threads <= 1) {
-    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), visit, kCutoff);
-    return;
+void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visit) {
+  constexpr std::size_t kWideColumns = 64;
+  const std::size_t n = boxes.size();
+  if (n < 2) return;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  struct Swept {
+    double lo, hi, ulo, uhi, vlo, vhi;  // along axis, u, v
+    std::uint32_t box;
+  };
+  auto overlap = [](const Swept& a, const Swept& b) {
+    return b.lo <= a.hi && a.lo <= b.hi && b.ulo <= a.uhi && a.ulo <= b.uhi && b.vlo <= a.vhi && a.vlo <= b.vhi;
+  };
+  std::vector<Swept> swept(n);
+  double umin = HUGE_VAL, umax = -HUGE_VAL, vmin = HUGE_VAL, vmax = -HUGE_VAL;
+  std::vector<double> uext(n), vext(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Box& b = boxes[i];
+    swept[i] = {b.min_coord(axis), b.max_coord(axis), b.min_coord(u), b.max_coord(u), b.min_coord(v), b.max_coord(v),
+                std::uint32_t(i)};
+    umin = std::min(umin, swept[i].ulo), umax = std::max(umax, swept[i].uhi);
+    vmin = std::min(vmin, swept[i].vlo), vmax = std::max(vmax, swept[i].vhi);
+    uext[i] = swept[i].uhi - swept[i].ulo, vext[i] = swept[i].vhi - swept[i].vlo;
   }
-  const std::size_t slab_count = std::min<std::size_t>(4 * threads, boxes.size() / 4096 + 1);
-  std::vector<double> lower_ends(boxes.size());
-  for (std::size_t b = 0; b < boxes.size(); ++b) lower_ends[b] = boxes[b].min_coord(axis);
-  std::sort(lower_ends.begin(), lower_ends.end());
-  std::vector<double> bounds;  // slab s is [bounds[s - 1], bounds[s]), the first and last unbounded
-  for (std::size_t s = 1; s < slab_count; ++s) bounds.push_back(lower_ends[s * lower_ends.size() / slab_count]);
-  auto slab_of = [&](double x) { return std::size_t(std::upper_bound(bounds.begin(), bounds.end(), x) - bounds.begin()); };
-  std::vector<std::vector<Box>> slabs(slab_count);
-  for (const Box& b : boxes)
-    for (std::size_t s = slab_of(b.min_coord(axis)), last = slab_of(b.max_coord(axis)); s <= last; ++s)
-      slabs[s].push_back(b);
-  parallel_chunks(slab_count, 1, [&](const auto& range) {
-    for (std::size_t s = range.begin(); s != range.end(); ++s)
-      CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
-          slabs[s].begin(), slabs[s].end(),
-          [&](const Box& x, const Box& y) {
-            if (slab_of(std::max(x.min_coord(axis), y.min_coord(axis))) == s) visit(x, y);
-          },
-          kCutoff);
-  });
+  // Columns per axis: the range over the median extent, at most n columns in all. Extents of 0
+  // (faces square to the axis, common in CAD parts) are left out of the median.
+  auto columns = [n](std::vector<double>& extents, double range) -> std::size_t {
+    extents.erase(std::remove_if(extents.begin(), extents.end(), [](double e) { return !(e > 0); }), extents.end());
+    if (extents.empty() || !(range > 0 && std::isfinite(range))) return 1;
+    std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+    const double count = range / extents[extents.size() / 2];
+    return count >= double(n) ? n : std::max<std::size_t>(1, std::size_t(count));
+  };
+  std::size_t nu = columns(uext, umax - umin), nv = columns(vext, vmax - vmin);
+  std::vector<double>().swap(uext), std::vector<double>().swap(vext);
+  while (nu * nv > n) (nu >= nv ? nu : nv) = std::max<std::size_t>(1, (nu >= nv ? nu : nv) / 2);
+  const double su = nu > 1 ? double(nu) / (umax - umin) : 0, sv = nv > 1 ? double(nv) / (vmax - vmin) : 0;
+  auto cell = [](double x, double min, double scale, std::size_t count) -> std::size_t {
+    const double c = (x - min) * scale;
+    return c > 0 ? (c < double(count) ? std::size_t(c) : count - 1) : 0;
+  };
+  struct Cells {
+    std::size_t u0, u1, v0, v1;
+  };
+  auto cells_of = [&](const Swept& b) {
+    return Cells{cell(b.ulo, umin, su, nu), cell(b.uhi, umin, su, nu), cell(b.vlo, vmin, sv, nv), cell(b.vhi, vmin, sv, nv)};
+  };
+
+  std::sort(swept.begin(), swept.end(), [](const Swept& a, const Swept& b) { return a.lo < b.lo || (a.lo == b.lo && a.box < b.box); });
+  // Each column's boxes, in sweep order (a counting sort), and the wide boxes apart.
+  std::vector<std::uint32_t> start(nu * nv + 1, 0), wide;
+  std::vector<char> is_wide(n, 0);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Cells c = cells_of(swept[i]);
+    if ((c.u1 - c.u0 + 1) * (c.v1 - c.v0 + 1) > kWideColumns) {
+      wide.push_back(i);
+      is_wide[i] = 1;
+      continue;
+    }
+    for (std::size_t cu = c.u0; cu <= c.u1; ++cu)
+      for (std::size_t cv = c.v0; cv <= c.v1; ++cv) ++start[cu * nv + cv + 1];
+  }
+  for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+  std::vector<std::uint32_t> members(start.back());
+  {
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (is_wide[i]) continue;
+      const Cells c = cells_of(swept[i]);
+      for (std::size_t cu = c.u0; cu <= c.u1; ++cu)
+        for (std::size_t cv = c.v0; cv <= c.v1; ++cv) members[next[cu * nv + cv]++] = i;
+    }
+  }
+  auto visit_pair = [&](const Swept& a, const Swept& b) { visit(boxes[a.box], boxes[b.box]); };
+  auto sweep_columns = [&](std::size_t first, std::size_t last) {
+    for (std::size_t col = first; col != last; ++col) {
+      const std::size_t cu = col / nv, cv = col % nv;
+      for (std::uint32_t k = start[col]; k < start[col + 1]; ++k) {
+        const Swept& a = swept[members[k]];
+        for (std::uint32_t l = k + 1; l < start[col + 1]; ++l) {
+          const Swept& b = swept[members[l]];
+          if (b.lo > a.hi) break;
+          if (!overlap(a, b)) continue;
+          const Cells ca = cells_of(a), cb = cells_of(b);
+          if (std::max(ca.u0, cb.u0) == cu && std::max(ca.v0, cb.v0) == cv) visit_pair(a, b);
+        }
+      }
+    }
+  };
+  // The wide boxes against each other and against every other box, in sweep order: the box that
+  // begins first meets those that begin before it ends.
+  auto sweep_wide = [&] {
+    for (std::size_t k = 0; k < wide.size(); ++k)
+      for (std::size_t l = k + 1; l < wide.size() && swept[wide[l]].lo <= swept[wide[k]].hi; ++l)
+        if (overlap(swept[wide[k]], swept[wide[l]])) visit_pair(swept[wide[k]], swept[wide[l]]);
+    std::size_t w = 0, i = 0;
+    while (w < wide.size() && i < n) {
+      if (is_wide[i]) {
+        ++i;
+        continue;
+      }
+      const Swept& a = swept[wide[w]];
+      const Swept& b = swept[i];
+      if (wide[w] < i) {  // the wide box begins first
+        for (std::size_t j = i; j < n && swept[j].lo <= a.hi; ++j)
+          if (!is_wide[j] && overlap(a, swept[j])) visit_pair(a, swept[j]);
+        ++w;
+      } else {
+        for (std::size_t l = w; l < wide.size() && swept[wide[l]].lo <= b.hi; ++l)
+          if (overlap(b, swept[wide[l]])) visit_pair(b, swept[wide[l]]);
+        ++i;
+      }
+    }
+  };
+  const auto threads = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  const std::size_t column_count = nu * nv;
+  if (threads <= 1 || n < 4096) {
+    sweep_columns(0, column_count);
+  } else {
+    parallel_chunks(column_count, std::max<std::size_t>(1, column_count / (16 * threads)),
+                    [&](const auto& range) { sweep_columns(range.begin(), range.end()); });
+  }
+  sweep_wide();
 }
 
 class LooseGrid {

@@ -1,6 +1,6 @@
 // intersection_lines (hlr/hidden_line/lines.hpp): where faces penetrate, in model space, exactly.
 //
-// Candidate pairs come from CGAL's box intersection on the faces' 3D bounding boxes. A pair can only
+// Candidate pairs are the faces whose 3D bounding boxes overlap (overlapping_box_pairs). A pair can only
 // cross when each face has corners strictly on both sides of the other's plane (exact orientation
 // predicates on the input doubles), which rejects neighbours that merely share an edge or a corner
 // and faces that only touch. Two triangles each cut an open chord from the line where their

@@ -1,16 +1,24 @@
-// White-box property test of the loose grid (hidden_line/src/box_index.hpp), the candidate filter
-// of the area sort, line classification and precedence: a query must visit every inserted box
-// that overlaps it and was not removed, each once, and no other. Boxes on a coarse grid (touching and equal boxes in
-// most draws), points and slivers, far from the origin, and boxes inserted after the domain was
-// fixed (the area sort files the pieces of clips, which may stick out of it by rounding).
+// White-box property tests of the candidate filters of hidden_line/src/box_index.hpp.
+// - The loose grid (area sort, line classification, precedence): a query must visit every inserted
+//   box that overlaps it and was not removed, each once, and no other.
+// - overlapping_box_pairs (the penetration search, precedence's line keys): every overlapping
+//   pair of a set once, and no other, on one thread and on two.
+// Boxes on a coarse grid (touching and equal boxes in most draws), points and slivers, far from
+// the origin, and for the grid boxes inserted after the domain was fixed (the area sort files the
+// pieces of clips, which may stick out of it by rounding).
 #include "box_index.hpp"
 
+#include <CGAL/Bbox_3.h>
+#include <CGAL/box_intersection_d.h>
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <mutex>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -54,6 +62,58 @@ RC_GTEST_PROP(LooseGrid, VisitsExactlyTheOverlappingBoxesOnce, ()) {
     std::sort(visited.begin(), visited.end());
     RC_ASSERT(visited == expected);
   }
+}
+
+// A 3D box as the penetration search makes them: mostly small, some flat (faces square to an
+// axis), points, and long slivers across much of the scene (which the pair search sweeps apart).
+CGAL::Bbox_3 random_box_3(double origin, double unit) {
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) {
+    const int at = *rc::gen::inRange(-30, 31);
+    const int extent = *rc::gen::weightedOneOf<int>({{8, rc::gen::inRange(0, 4)}, {1, rc::gen::inRange(0, 61)}});
+    lo[k] = origin + at * unit, hi[k] = origin + (at + extent) * unit;
+  }
+  return CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+}
+
+RC_GTEST_PROP(OverlappingBoxPairs, VisitsEveryOverlappingPairOnce, ()) {
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+  const double origin = *rc::gen::element(0.0, 1e9, -3.5e6, 1e-9);
+  const double unit = *rc::gen::element(1.0, 1e-3, 0.1, 1e-9, 7.0);
+  // Past 4,096 boxes the columns are searched on several threads.
+  const std::size_t n = *rc::gen::weightedOneOf<std::size_t>({{6, rc::gen::inRange<std::size_t>(0, 300)},
+                                                              {1, rc::gen::inRange<std::size_t>(4096, 5000)}});
+  const int axis = *rc::gen::inRange(0, 3);
+  const int threads = *rc::gen::inRange(1, 3);
+  std::vector<Box> boxes;
+  for (std::uint32_t i = 0; i < n; ++i) boxes.emplace_back(random_box_3(origin, unit), i);
+  // All of them in one plane now and then: every extent along one axis 0.
+  if (n > 0 && *rc::gen::inRange(0, 8) == 0)
+    for (Box& b : boxes) {
+      double lo[3] = {b.min_coord(0), b.min_coord(1), b.min_coord(2)}, hi[3] = {b.max_coord(0), b.max_coord(1), b.max_coord(2)};
+      hi[axis] = lo[axis] = origin;
+      b = Box(lo, hi, b.info());
+    }
+
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> visited, expected;
+  std::mutex mutex;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    hlr::hidden_line::detail::overlapping_box_pairs(boxes, axis, [&](const Box& x, const Box& y) {
+      const std::lock_guard lock(mutex);
+      visited.emplace_back(std::min(x.info(), y.info()), std::max(x.info(), y.info()));
+    });
+  }
+  auto overlap = [](const Box& x, const Box& y) {
+    for (int k = 0; k < 3; ++k)
+      if (x.max_coord(k) < y.min_coord(k) || y.max_coord(k) < x.min_coord(k)) return false;
+    return true;
+  };
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = i + 1; j < n; ++j)
+      if (overlap(boxes[i], boxes[j])) expected.emplace_back(i, j);
+  std::sort(visited.begin(), visited.end());
+  RC_ASSERT(visited == expected);
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // intersection_lines (hlr/hidden_line/lines.hpp): where faces penetrate, in model space, exactly.
 //
-// Candidate pairs are the faces whose 3D bounding boxes overlap (overlapping_box_pairs). A pair can only
-// cross when each face has corners strictly on both sides of the other's plane (exact orientation
-// predicates on the input doubles), which rejects neighbours that merely share an edge or a corner
-// and faces that only touch. Two triangles each cut an open chord from the line where their
+// Candidate pairs are the faces whose 3D bounding boxes overlap (overlapping_box_pairs). A pair
+// can only cross when each face has corners strictly on both sides of the other's plane (exact
+// orientation predicates on the input doubles), which rejects neighbours that merely share an edge
+// or a corner and faces that only touch. Two triangles each cut an open chord from the line where their
 // planes meet, with ends built from the input doubles (TriangleChords), and the chords overlap.
 // For other faces, that line is intersected with the relative interior of each face in the face's
 // own plane (projected along the normal's largest axis), and the two interval sets, measured with

@@ -71,46 +71,51 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
   };
   std::vector<Swept> swept(n);
   double umin = HUGE_VAL, umax = -HUGE_VAL, vmin = HUGE_VAL, vmax = -HUGE_VAL;
-  std::vector<double> uext(n), vext(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Box& b = boxes[i];
     swept[i] = {b.min_coord(axis), b.max_coord(axis), b.min_coord(u), b.max_coord(u), b.min_coord(v), b.max_coord(v),
                 std::uint32_t(i)};
     umin = std::min(umin, swept[i].ulo), umax = std::max(umax, swept[i].uhi);
     vmin = std::min(vmin, swept[i].vlo), vmax = std::max(vmax, swept[i].vhi);
-    uext[i] = swept[i].uhi - swept[i].ulo, vext[i] = swept[i].vhi - swept[i].vlo;
   }
-  // Columns per axis: the range over the median extent, at most n columns in all. Extents of 0
-  // (faces square to the axis, common in CAD parts) are left out of the median.
-  auto columns = [n](std::vector<double>& extents, double range) -> std::size_t {
-    extents.erase(std::remove_if(extents.begin(), extents.end(), [](double e) { return !(e > 0); }), extents.end());
-    if (extents.empty() || !(range > 0 && std::isfinite(range))) return 1;
-    std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
-    const double count = range / extents[extents.size() / 2];
-    return count >= double(n) ? n : std::max<std::size_t>(1, std::size_t(count));
-  };
-  std::size_t nu = columns(uext, umax - umin), nv = columns(vext, vmax - vmin);
-  std::vector<double>().swap(uext), std::vector<double>().swap(vext);
-  while (nu * nv > n) (nu >= nv ? nu : nv) = std::max<std::size_t>(1, (nu >= nv ? nu : nv) / 2);
-  const double su = nu > 1 ? double(nu) / (umax - umin) : 0, sv = nv > 1 ? double(nv) / (vmax - vmin) : 0;
+  // Square columns, measured in parts of each axis's range (the axes may be in different units,
+  // as precedence's angles and offsets are), as wide as the median box; at most n of them.
+  const double urange = umax - umin, vrange = vmax - vmin;
+  const bool split_u = urange > 0 && std::isfinite(urange), split_v = vrange > 0 && std::isfinite(vrange);
+  std::size_t nu = 1, nv = 1;
+  {
+    std::vector<double> extent(n);
+    for (std::size_t i = 0; i < n; ++i)
+      extent[i] = std::max(split_u ? (swept[i].uhi - swept[i].ulo) / urange : 0.0,
+                           split_v ? (swept[i].vhi - swept[i].vlo) / vrange : 0.0);
+    std::nth_element(extent.begin(), extent.begin() + n / 2, extent.end());
+    const double median = extent[n / 2];
+    const std::size_t per_axis = median > 0 ? std::size_t(std::min(1 / median, double(n))) : n;
+    if (split_u) nu = std::max<std::size_t>(per_axis, 1);
+    if (split_v) nv = std::max<std::size_t>(per_axis, 1);
+  }
+  while (nu * nv > n) (nu >= nv ? nu : nv) /= 2;
+  const double su = nu > 1 ? double(nu) / urange : 0, sv = nv > 1 ? double(nv) / vrange : 0;
   auto cell = [](double x, double min, double scale, std::size_t count) -> std::size_t {
     const double c = (x - min) * scale;
     return c > 0 ? (c < double(count) ? std::size_t(c) : count - 1) : 0;
   };
   struct Cells {
-    std::size_t u0, u1, v0, v1;
+    std::uint32_t u0, u1, v0, v1;
   };
   auto cells_of = [&](const Swept& b) {
-    return Cells{cell(b.ulo, umin, su, nu), cell(b.uhi, umin, su, nu), cell(b.vlo, vmin, sv, nv), cell(b.vhi, vmin, sv, nv)};
+    return Cells{std::uint32_t(cell(b.ulo, umin, su, nu)), std::uint32_t(cell(b.uhi, umin, su, nu)),
+                 std::uint32_t(cell(b.vlo, vmin, sv, nv)), std::uint32_t(cell(b.vhi, vmin, sv, nv))};
   };
 
   std::sort(swept.begin(), swept.end(), [](const Swept& a, const Swept& b) { return a.lo < b.lo || (a.lo == b.lo && a.box < b.box); });
   // Each column's boxes, in sweep order (a counting sort), and the wide boxes apart.
   std::vector<std::uint32_t> start(nu * nv + 1, 0), wide;
   std::vector<char> is_wide(n, 0);
+  std::vector<Cells> cells(n);  // of swept[i]
   for (std::uint32_t i = 0; i < n; ++i) {
-    const Cells c = cells_of(swept[i]);
-    if ((c.u1 - c.u0 + 1) * (c.v1 - c.v0 + 1) > kWideColumns) {
+    const Cells c = cells[i] = cells_of(swept[i]);
+    if (std::size_t(c.u1 - c.u0 + 1) * (c.v1 - c.v0 + 1) > kWideColumns) {
       wide.push_back(i);
       is_wide[i] = 1;
       continue;
@@ -124,7 +129,7 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
     for (std::uint32_t i = 0; i < n; ++i) {
       if (is_wide[i]) continue;
-      const Cells c = cells_of(swept[i]);
+      const Cells& c = cells[i];
       for (std::size_t cu = c.u0; cu <= c.u1; ++cu)
         for (std::size_t cv = c.v0; cv <= c.v1; ++cv) members[next[cu * nv + cv]++] = i;
     }
@@ -135,11 +140,12 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
       const std::size_t cu = col / nv, cv = col % nv;
       for (std::uint32_t k = start[col]; k < start[col + 1]; ++k) {
         const Swept& a = swept[members[k]];
+        const Cells& ca = cells[members[k]];
         for (std::uint32_t l = k + 1; l < start[col + 1]; ++l) {
           const Swept& b = swept[members[l]];
           if (b.lo > a.hi) break;
           if (!overlap(a, b)) continue;
-          const Cells ca = cells_of(a), cb = cells_of(b);
+          const Cells& cb = cells[members[l]];
           if (std::max(ca.u0, cb.u0) == cu && std::max(ca.v0, cb.v0) == cv) visit_pair(a, b);
         }
       }

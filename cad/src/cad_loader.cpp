@@ -77,9 +77,7 @@ Scene load_scene(const std::vector<std::string>& paths, const CadOptions& option
     if (is_cad_extension(detail::extension_of(path))) {
       for (CadPart& part : load_cad(path, options)) scene.add(std::move(part.mesh), part.report);
     } else {
-      ImportReport report;
-      Mesh mesh = load_mesh(path, report);
-      scene.add(std::move(mesh), report);
+      scene.add_file(path);
     }
   }
   return scene;

@@ -187,7 +187,10 @@ std::size_t count_isolated(const Mesh& mesh, const std::vector<EdgeUse>& uses) {
   return static_cast<std::size_t>(std::count(shares.begin(), shares.end(), 0));
 }
 
-Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
+// The mesh from a reader's output, checked and prepared. With keep_topology it keeps the topology
+// its checks found (Scene::add_file, which adds the mesh at once), else it leaves it unset, for a
+// caller may change the mesh before adding it.
+Mesh finish(const std::string& path, RawMesh raw, ImportReport& report, bool keep_topology = false) {
   auto fail = [&](const std::string& problem) -> void { throw ImportError(path + ": " + problem); };
   constexpr std::size_t kMaxCount = std::numeric_limits<std::uint32_t>::max();
   if (raw.vertices.size() > kMaxCount) fail("too many vertices (at most 2^32 - 1)");
@@ -243,9 +246,11 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
   mesh.vertices = std::move(raw.vertices);
   if (groups) mesh.group_names = std::move(raw.group_names);
 
-  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  // The whole topology, which the checks below need most of and Scene::add_file keeps.
+  auto topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
+  const std::vector<EdgeUse>& uses = topology->uses;
   const std::size_t nonmanifold = count_nonmanifold(mesh, uses);
-  const std::size_t inward = component_sides(mesh, uses).inward;
+  const std::size_t inward = topology->sides.inward;
   for (const auto& w : raw.warnings) report.warnings.push_back(path + ": " + w);
   if (degenerate > 0)
     report.warnings.push_back(path + ": " + std::to_string(degenerate) +
@@ -268,25 +273,12 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report) {
   report.fanned_faces += prepared.fanned;
   report.split_faces += prepared.split;
   report.inward_components += inward;
+  if (keep_topology) mesh.topology = std::move(topology);
   return mesh;
 }
 
-}  // namespace
-
-Mesh load_mesh(const std::string& path, ImportReport& report) {
-  const std::string ext = extension_of(path);
-  if (ext.empty()) throw ImportError(path + ": no file extension (expected .off, .obj, .stl or .ply)");
-  if (!is_mesh_extension(ext))
-    throw ImportError(path + ": unknown extension '" + ext + "' (expected .off, .obj, .stl or .ply)");
-  return parse_mesh(path, ext, read_file(path), report);
-}
-
-bool is_mesh_extension(const std::string& extension) {
-  const std::string ext = lower(extension);
-  return ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply";
-}
-
-Mesh parse_mesh(const std::string& name, const std::string& extension, std::string bytes, ImportReport& report) {
+Mesh parse_checked(const std::string& name, const std::string& extension, std::string bytes, ImportReport& report,
+                   bool keep_topology) {
   const std::string ext = lower(extension);
   RawMesh (*reader)(const std::string&) = ext == ".off"   ? &scene_detail::read_off
                                           : ext == ".obj" ? &scene_detail::read_obj
@@ -304,7 +296,28 @@ Mesh parse_mesh(const std::string& name, const std::string& extension, std::stri
     throw ImportError(name + ": out of memory while reading");
   }
   bytes = std::string();
-  return finish(name, std::move(raw), report);
+  return finish(name, std::move(raw), report, keep_topology);
+}
+
+Mesh read_mesh(const std::string& path, ImportReport& report, bool keep_topology) {
+  const std::string ext = extension_of(path);
+  if (ext.empty()) throw ImportError(path + ": no file extension (expected .off, .obj, .stl or .ply)");
+  if (!is_mesh_extension(ext))
+    throw ImportError(path + ": unknown extension '" + ext + "' (expected .off, .obj, .stl or .ply)");
+  return parse_checked(path, ext, read_file(path), report, keep_topology);
+}
+
+}  // namespace
+
+Mesh load_mesh(const std::string& path, ImportReport& report) { return read_mesh(path, report, false); }
+
+bool is_mesh_extension(const std::string& extension) {
+  const std::string ext = lower(extension);
+  return ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply";
+}
+
+Mesh parse_mesh(const std::string& name, const std::string& extension, std::string bytes, ImportReport& report) {
+  return parse_checked(name, extension, std::move(bytes), report, false);
 }
 
 Mesh make_mesh(const std::string& name, std::vector<std::array<double, 3>> vertices,
@@ -322,17 +335,19 @@ void Scene::add(Mesh mesh, const ImportReport& report) {
   input.welded_vertices += report.welded_vertices;
   input.parts.push_back(mesh.name);
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
-  mesh.topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
+  if (!mesh.topology) mesh.topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
   meshes.push_back(std::move(mesh));
+}
+
+void Scene::add_file(const std::string& path) {
+  ImportReport report;
+  Mesh mesh = read_mesh(path, report, true);
+  add(std::move(mesh), report);
 }
 
 Scene load_scene(const std::vector<std::string>& paths) {
   Scene scene;
-  for (const auto& path : paths) {
-    ImportReport report;
-    Mesh mesh = load_mesh(path, report);
-    scene.add(std::move(mesh), report);
-  }
+  for (const auto& path : paths) scene.add_file(path);
   return scene;
 }
 

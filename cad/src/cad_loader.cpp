@@ -4,6 +4,7 @@
 #include "occ_module.hpp"
 
 #include <hlr/cad/cad.hpp>
+#include <hlr/kernel/scene_import.hpp>
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -77,7 +78,7 @@ Scene load_scene(const std::vector<std::string>& paths, const CadOptions& option
     if (is_cad_extension(detail::extension_of(path))) {
       for (CadPart& part : load_cad(path, options)) scene.add(std::move(part.mesh), part.report);
     } else {
-      scene.add_file(path);
+      add_mesh_file(scene, path);
     }
   }
   return scene;

@@ -1,8 +1,9 @@
 // load_mesh: reads the file, hands it to the format's reader (scene_readers.hpp), welds vertices
 // and prepares the faces (scene_faces.hpp), then counts the non-manifold faces (definitions in
-// hlr/kernel/scene.hpp).
+// hlr/kernel/scene.hpp); add_mesh_file (hlr/kernel/scene_import.hpp).
 #include <hlr/kernel/mesh_edges.hpp>
 #include <hlr/kernel/scene.hpp>
+#include <hlr/kernel/scene_import.hpp>
 
 #include "scene_faces.hpp"
 #include "scene_readers.hpp"
@@ -188,7 +189,7 @@ std::size_t count_isolated(const Mesh& mesh, const std::vector<EdgeUse>& uses) {
 }
 
 // The mesh from a reader's output, checked and prepared. With keep_topology it keeps the topology
-// its checks found (Scene::add_file, which adds the mesh at once), else it leaves it unset, for a
+// its checks found (add_mesh_file, which adds the mesh at once), else it leaves it unset, for a
 // caller may change the mesh before adding it.
 Mesh finish(const std::string& path, RawMesh raw, ImportReport& report, bool keep_topology = false) {
   auto fail = [&](const std::string& problem) -> void { throw ImportError(path + ": " + problem); };
@@ -246,7 +247,7 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report, bool kee
   mesh.vertices = std::move(raw.vertices);
   if (groups) mesh.group_names = std::move(raw.group_names);
 
-  // The whole topology, which the checks below need most of and Scene::add_file keeps.
+  // The whole topology, which the checks below need most of and add_mesh_file keeps.
   auto topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
   const std::vector<EdgeUse>& uses = topology->uses;
   const std::size_t nonmanifold = count_nonmanifold(mesh, uses);
@@ -339,15 +340,15 @@ void Scene::add(Mesh mesh, const ImportReport& report) {
   meshes.push_back(std::move(mesh));
 }
 
-void Scene::add_file(const std::string& path) {
+void add_mesh_file(Scene& scene, const std::string& path) {
   ImportReport report;
   Mesh mesh = read_mesh(path, report, true);
-  add(std::move(mesh), report);
+  scene.add(std::move(mesh), report);
 }
 
 Scene load_scene(const std::vector<std::string>& paths) {
   Scene scene;
-  for (const auto& path : paths) scene.add_file(path);
+  for (const auto& path : paths) add_mesh_file(scene, path);
   return scene;
 }
 

@@ -141,8 +141,6 @@ struct Scene {
   InputInfo input;
   std::vector<std::string> warnings;  // the importer's, one line each ("FILE: ...")
   void add(Mesh mesh, const ImportReport& report);
-  // load_mesh and add, with the topology the import's checks found kept rather than found again.
-  void add_file(const std::string& path);
 };
 
 // Reads every file (load_mesh) into one scene. Throws ImportError.

@@ -50,7 +50,7 @@ CGAL::Bbox_2 box_of(const clip::Polygon<K>& p) {
 // lower ends along `axis`; there a box is tested against those after it until their lower ends
 // pass its upper end. So a box meets a few boxes beside it rather than every box of its slice
 // across the scene, and no tree is built (CGAL's box_self_intersection_d, which this replaced,
-// spent most of its time splitting: refined_elephant's 538,234 pairs took 55 ms there, 18 ms
+// spent most of its time splitting: refined_elephant's 538,234 pairs took 49 ms there, 21 ms
 // here; docs/BENCHMARKS.md, "Fifteenth run"). A pair is visited in the column that holds the
 // larger of the two boxes' lower corners, which both meet: once. Boxes that meet more than
 // kWideColumns columns (long slivers) are swept apart, against every box. Columns are computed
@@ -120,7 +120,8 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
     if (entries <= 3 * n) break;
   }
 
-  std::sort(swept.begin(), swept.end(), [](const Swept& a, const Swept& b) { return a.lo < b.lo || (a.lo == b.lo && a.box < b.box); });
+  std::sort(swept.begin(), swept.end(),
+            [](const Swept& a, const Swept& b) { return a.lo < b.lo || (a.lo == b.lo && a.box < b.box); });
   // Each column's boxes, in sweep order (a counting sort), and the wide boxes apart.
   std::vector<std::uint32_t> start(nu * nv + 1, 0), wide;
   std::vector<char> is_wide(n, 0);

@@ -364,8 +364,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   };
   // The sweep runs along the axis that the faces' boxes are shortest along, on average, in parts
   // of the scene's extent: a box long along the sweep meets every box of its column over its
-  // length. On the shared scenes this picks the fastest of the three axes, or one within 1.6x of it
-  // (docs/BENCHMARKS.md, "Fifteenth run"); the scene's longest axis was 2.9x off on two of them.
+  // length (bench/box_pairs/box_pairs_bench.cpp times the three).
   int axis = 0;
   {
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, length[3] = {0, 0, 0};

@@ -329,21 +329,30 @@ Mesh make_mesh(const std::string& name, std::vector<std::array<double, 3>> verti
   return finish(name, std::move(raw), report);
 }
 
-void Scene::add(Mesh mesh, const ImportReport& report) {
+namespace {
+
+// Scene::add, with the mesh's topology taken as it is when `fresh` (a mesh just read, which no one
+// has had the chance to change) rather than found again.
+void add_to(Scene& scene, Mesh mesh, const ImportReport& report, bool fresh) {
+  InputInfo& input = scene.input;
   input.files.push_back(mesh.file);
   input.faces += mesh.faces.size();
   input.vertices += mesh.vertices.size();
   input.welded_vertices += report.welded_vertices;
   input.parts.push_back(mesh.name);
-  warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
-  if (!mesh.topology) mesh.topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
-  meshes.push_back(std::move(mesh));
+  scene.warnings.insert(scene.warnings.end(), report.warnings.begin(), report.warnings.end());
+  if (!fresh || !mesh.topology) mesh.topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
+  scene.meshes.push_back(std::move(mesh));
 }
+
+}  // namespace
+
+void Scene::add(Mesh mesh, const ImportReport& report) { add_to(*this, std::move(mesh), report, false); }
 
 void add_mesh_file(Scene& scene, const std::string& path) {
   ImportReport report;
   Mesh mesh = read_mesh(path, report, true);
-  scene.add(std::move(mesh), report);
+  add_to(scene, std::move(mesh), report, true);
 }
 
 Scene load_scene(const std::vector<std::string>& paths) {

@@ -1,5 +1,6 @@
 // Scene import: every format reads exactly and completely, topology problems are counted, bad
 // files give one ImportError line that starts with the file name.
+#include <hlr/kernel/mesh_edges.hpp>
 #include <hlr/kernel/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -314,6 +315,34 @@ TEST(SceneImport, ReportAccumulatesOverFiles) {
   EXPECT_EQ(report.degenerate_faces, 5u);
   EXPECT_EQ(report.nonmanifold_faces, 3u);
   EXPECT_EQ(report.warnings.size(), 2u);
+}
+
+// add_mesh_file (load_scene) keeps the topology the import's checks found; it must be the one
+// Scene::add finds for the same mesh, and load_mesh must leave it unset for the caller to change.
+TEST(SceneImport, AddMeshFileKeepsTheTopologySceneAddWouldFind) {
+  for (const char* name :
+       {"/degenerate.off", "/nonmanifold.off", "/orientation_clash.off", "/../parts/anchor.off"}) {
+    const std::string path = kFixtures + name;
+    const Scene kept = load_scene({path});
+    ImportReport report;
+    Mesh mesh = load_mesh(path, report);
+    EXPECT_EQ(mesh.topology, nullptr) << name;
+    Scene found;
+    found.add(std::move(mesh), report);
+    ASSERT_EQ(kept.meshes.size(), 1u);
+    const MeshTopology &a = *kept.meshes[0].topology, &b = *found.meshes[0].topology;
+    ASSERT_EQ(a.uses.size(), b.uses.size()) << name;
+    for (std::size_t i = 0; i < a.uses.size(); ++i) {
+      EXPECT_EQ(a.uses[i].key, b.uses[i].key);
+      EXPECT_EQ(a.uses[i].face, b.uses[i].face);
+      EXPECT_EQ(a.uses[i].forward, b.uses[i].forward);
+    }
+    EXPECT_EQ(a.sides.component, b.sides.component) << name;
+    EXPECT_EQ(a.sides.outward, b.sides.outward) << name;
+    EXPECT_EQ(a.groups.group, b.groups.group) << name;
+    EXPECT_EQ(kept.warnings, found.warnings) << name;
+    EXPECT_EQ(kept.input.faces, found.input.faces) << name;
+  }
 }
 
 // --- errors -------------------------------------------------------------------------------------

@@ -75,6 +75,13 @@ bench_banner() {
   echo "peer: $([ "$have_peer" = 1 ] && blender -b --version 2>/dev/null | head -1 || echo absent), REPEAT=$repeat THREADS=$threads"
   echo "HLR_REPEAT=$hlr_repeat TIMEOUT=$timeout_s VIEWS=$views SKIP=${SKIP:-} $*"
   echo "machine: $(nproc) cores, $(uptime | sed 's/.*load/load/')"
+  # Something else on the cores skews every time: a benchmark run once went through, unnoticed,
+  # beside a test left running (docs/BENCHMARKS.md, "Fifteenth run").
+  local busy
+  busy=$(awk '{split($4, r, "/"); print r[1] - 1}' /proc/loadavg 2>/dev/null || echo 0)
+  if [ "${busy:-0}" -gt 0 ]; then
+    echo "warning: $busy other processes are running now (/proc/loadavg): the times will be off" >&2
+  fi
   echo "work: $work"
 }
 

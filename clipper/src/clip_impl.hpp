@@ -164,7 +164,6 @@ struct SweepBuffers {
 
 // Calls visit(i, j) for every pair of edges whose boxes overlap (sweep over x), in the order of
 // their smaller x. With `across_contours_only`, pairs of edges of one contour are not visited.
-
 template <bool across_contours_only, class Visit>
 void for_each_overlapping_pair(const std::vector<InputEdge>& edges, SweepBuffers& buffers, Visit&& visit) {
   std::vector<SweepBox>& sweep = buffers.boxes;

@@ -108,26 +108,25 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
     return Cells{std::uint32_t(cell(b.ulo, umin, su, nu)), std::uint32_t(cell(b.uhi, umin, su, nu)),
                  std::uint32_t(cell(b.vlo, vmin, sv, nv)), std::uint32_t(cell(b.vhi, vmin, sv, nv))};
   };
+  std::sort(swept.begin(), swept.end(),
+            [](const Swept& a, const Swept& b) { return a.lo < b.lo || (a.lo == b.lo && a.box < b.box); });
+  std::vector<Cells> cells(n);  // of swept[i], in the columns chosen
   for (double width = median;; width *= 2) {
     const std::size_t per_axis = width > 0 ? std::size_t(std::min(1 / width, double(n))) : n;
     nu = split_u ? std::max<std::size_t>(per_axis, 1) : 1;
     nv = split_v ? std::max<std::size_t>(per_axis, 1) : 1;
     while (nu * nv > n) (nu >= nv ? nu : nv) /= 2;
     su = nu > 1 ? double(nu) / urange : 0, sv = nv > 1 ? double(nv) / vrange : 0;
-    if (!(width > 0 && width < 8 * median) || nu * nv == 1) break;
     std::size_t entries = 0;
-    for (const Swept& b : swept) entries += std::min(cells_of(b).count(), kWideColumns);
-    if (entries <= 3 * n) break;
+    for (std::size_t i = 0; i < n; ++i) entries += std::min((cells[i] = cells_of(swept[i])).count(), kWideColumns);
+    if (entries <= 3 * n || !(width > 0 && width < 8 * median) || nu * nv == 1) break;
   }
 
-  std::sort(swept.begin(), swept.end(),
-            [](const Swept& a, const Swept& b) { return a.lo < b.lo || (a.lo == b.lo && a.box < b.box); });
   // Each column's boxes, in sweep order (a counting sort), and the wide boxes apart.
   std::vector<std::uint32_t> start(nu * nv + 1, 0), wide;
   std::vector<char> is_wide(n, 0);
-  std::vector<Cells> cells(n);  // of swept[i]
   for (std::uint32_t i = 0; i < n; ++i) {
-    const Cells c = cells[i] = cells_of(swept[i]);
+    const Cells& c = cells[i];
     if (c.count() > kWideColumns) {
       wide.push_back(i);
       is_wide[i] = 1;

@@ -247,11 +247,15 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report, bool kee
   mesh.vertices = std::move(raw.vertices);
   if (groups) mesh.group_names = std::move(raw.group_names);
 
-  // The whole topology, which the checks below need most of and add_mesh_file keeps.
-  auto topology = std::make_shared<const MeshTopology>(analyse_mesh(mesh));
-  const std::vector<EdgeUse>& uses = topology->uses;
+  // The checks below need the edge uses and components; the coplanar groups, the rest of the
+  // topology (analyse_mesh), only when it is kept.
+  MeshTopology topology;
+  topology.uses = edge_uses(mesh);
+  topology.sides = component_sides(mesh, topology.uses);
+  if (keep_topology) topology.groups = coplanar_groups(mesh, topology.uses);
+  const std::vector<EdgeUse>& uses = topology.uses;
   const std::size_t nonmanifold = count_nonmanifold(mesh, uses);
-  const std::size_t inward = topology->sides.inward;
+  const std::size_t inward = topology.sides.inward;
   for (const auto& w : raw.warnings) report.warnings.push_back(path + ": " + w);
   if (degenerate > 0)
     report.warnings.push_back(path + ": " + std::to_string(degenerate) +
@@ -274,7 +278,7 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report, bool kee
   report.fanned_faces += prepared.fanned;
   report.split_faces += prepared.split;
   report.inward_components += inward;
-  if (keep_topology) mesh.topology = std::move(topology);
+  if (keep_topology) mesh.topology = std::make_shared<const MeshTopology>(std::move(topology));
   return mesh;
 }
 

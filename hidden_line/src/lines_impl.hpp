@@ -685,17 +685,12 @@ class Classifier {
   LooseGrid grid_, edge_on_grid_;
 };
 
-// The segments' ends in an orthographic view, 2 i + e for end e of segment i: their view points,
-// and on the exact kernel the nearest doubles to them (from their recipes). Ends that are one lazy
-// point (the same id) share one view point, rounded once.
-template <class K>
-struct ViewEnds {
-  std::vector<ViewPoint<K>> points;
-  std::vector<std::optional<std::array<double, 3>>> rounded;
-};
-template <class K>
-ViewEnds<K> view_ends_of(const ViewFrame<K>& frame, const std::vector<IntersectionSegment>& segments,
-                         const StopToken& stop) {
+// The segments' ends in an orthographic view: end(2 i + e, point, rounded) for end e of segment i,
+// from every thread, with its view point and on the exact kernel the nearest doubles to it (from
+// its recipe). Ends that are one lazy point (the same id) share one view point, rounded once.
+template <class K, class End>
+void for_each_view_end(const ViewFrame<K>& frame, const std::vector<IntersectionSegment>& segments,
+                       const StopToken& stop, const End& end) {
   std::vector<std::pair<std::size_t, std::uint32_t>> ends(2 * segments.size());  // (point id, end)
   parallel_chunks(segments.size(), 4096, [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -708,11 +703,7 @@ ViewEnds<K> view_ends_of(const ViewFrame<K>& frame, const std::vector<Intersecti
   for (std::size_t k = 0; k < ends.size(); ++k)
     if (k == 0 || ends[k].first != ends[k - 1].first) firsts.push_back(k);
   firsts.push_back(ends.size());
-  constexpr bool rounds = Geometry<K>::exact_constructions;
   const RecipeRounding rounding(frame.view());
-  ViewEnds<K> out;
-  out.points.resize(ends.size());
-  if (rounds) out.rounded.resize(ends.size());
   parallel_chunks(firsts.size() - 1, 1024, [&](const auto& range) {
     stop.check();
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
@@ -720,14 +711,10 @@ ViewEnds<K> view_ends_of(const ViewFrame<K>& frame, const std::vector<Intersecti
       const IntersectionSegment& s = segments[first / 2];
       const ViewPoint<K> point = frame.to_view(first % 2 == 0 ? s.a : s.b);
       std::optional<std::array<double, 3>> rounded;
-      if (rounds) rounded = rounding.nearest(recipe_of(first % 2 == 0 ? s.a : s.b));
-      for (std::size_t k = firsts[r]; k != firsts[r + 1]; ++k) {
-        out.points[ends[k].second] = point;
-        if (rounds) out.rounded[ends[k].second] = rounded;
-      }
+      if constexpr (Geometry<K>::exact_constructions) rounded = rounding.nearest(recipe_of(first % 2 == 0 ? s.a : s.b));
+      for (std::size_t k = firsts[r]; k != firsts[r + 1]; ++k) end(ends[k].second, point, rounded);
     }
   });
-  return out;
 }
 
 template <class K>
@@ -767,8 +754,6 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
     out.lines.reserve(line_count);
     owns.reserve(line_count);
     segments.reserve(line_count);
-    if (options.intersections && !frame.perspective() && Geometry<K>::exact_constructions)
-      out.rounded_ends.reserve(intersections.size());
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       const NearCut<K>& cut = sources.near_cuts[m];
       for (const FeatureEdge& edge : edges[m]) {
@@ -790,48 +775,61 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
       }
     }
     if (options.intersections) {
-      // Each segment's ends in view coordinates and its sources, side by side; then the lines in order.
-      std::vector<std::optional<std::pair<ViewPoint<K>, ViewPoint<K>>>> view_ends(intersections.size());
-      std::vector<std::vector<std::int32_t>> segment_owns(intersections.size());
-      ViewEnds<K> shared_ends;
-      if (frame.perspective()) {
-        parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
-          options.stop.check();
-          for (std::size_t i = range.begin(); i != range.end(); ++i)
-            view_ends[i] = frame.to_view_clipped(intersections[i].a, intersections[i].b);
-        });
-      } else {
-        // Most crossings end two segments as one lazy point: its view point is made once.
-        shared_ends = view_ends_of(frame, intersections, options.stop);
-        parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
-          for (std::size_t i = range.begin(); i != range.end(); ++i)
-            view_ends[i].emplace(std::move(shared_ends.points[2 * i]), std::move(shared_ends.points[2 * i + 1]));
-        });
-        std::vector<ViewPoint<K>>().swap(shared_ends.points);  // moved from
-      }
-      parallel_chunks(intersections.size(), 1024, [&](const auto& range) {
+      // The segments' lines made in place, in parallel, then in perspective those wholly behind
+      // the near plane taken out: no copy of their ends is held beside the lines, where the run's
+      // memory peaks.
+      const std::size_t first = out.lines.size(), n = intersections.size();
+      out.lines.resize(first + n);
+      owns.resize(first + n);
+      segments.resize(first + n);
+      const bool rounds = !frame.perspective() && Geometry<K>::exact_constructions;
+      if (rounds) out.rounded_ends.resize(n);
+      std::vector<bool> behind;  // perspective: per segment, whether it is wholly behind the near plane
+      if (frame.perspective()) behind.resize(n);
+      parallel_chunks(n, 1024, [&](const auto& range) {
         options.stop.check();
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
           const IntersectionSegment& s = intersections[i];
-          if (view_ends[i]) segment_owns[i] = own_sources({{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
+          FeatureLine<K>& line = out.lines[first + i];
+          line.kind = FeatureKind::intersection;
+          line.mesh = s.mesh_a;
+          line.meeting_degrees = s.meeting_degrees;
+          if (rounds) line.rounded_ends = std::uint32_t(i);
+          segments[first + i] = &s;
+          if (frame.perspective()) {
+            const auto ends = frame.to_view_clipped(s.a, s.b);
+            if (!ends) {
+              behind[i] = true;
+              continue;
+            }
+            line.a = ends->first;
+            line.b = ends->second;
+          }
+          owns[first + i] = own_sources({{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
         }
       });
-      for (std::size_t i = 0; i < intersections.size(); ++i) {
-        const IntersectionSegment& s = intersections[i];
-        const auto& ends = view_ends[i];
-        if (!ends) continue;
-        FeatureLine<K> line;
-        line.a = ends->first;
-        line.b = ends->second;
-        line.kind = FeatureKind::intersection;
-        line.mesh = s.mesh_a;
-        line.meeting_degrees = s.meeting_degrees;
-        if (!shared_ends.rounded.empty()) {
-          line.rounded_ends = std::uint32_t(out.rounded_ends.size());
-          out.rounded_ends.push_back({shared_ends.rounded[2 * i], shared_ends.rounded[2 * i + 1]});
+      if (frame.perspective()) {
+        std::size_t kept = first;
+        for (std::size_t i = 0; i < n; ++i) {
+          if (behind[i]) continue;
+          if (kept != first + i) {
+            out.lines[kept] = std::move(out.lines[first + i]);
+            owns[kept] = std::move(owns[first + i]);
+            segments[kept] = segments[first + i];
+          }
+          ++kept;
         }
-        add(std::move(line), std::move(segment_owns[i]));
-        segments.back() = &s;
+        out.lines.resize(kept);
+        owns.resize(kept);
+        segments.resize(kept);
+      } else {
+        // Most crossings end two segments as one lazy point: its view point is made once.
+        for_each_view_end(frame, intersections, options.stop,
+                          [&](std::uint32_t end, const ViewPoint<K>& point, const std::optional<std::array<double, 3>>& rounded) {
+                            FeatureLine<K>& line = out.lines[first + end / 2];
+                            (end % 2 == 0 ? line.a : line.b) = point;
+                            if (rounds) out.rounded_ends[end / 2][end % 2] = rounded;
+                          });
       }
     }
 

@@ -11,6 +11,9 @@
 
 #include <cmath>
 #include <random>
+#include <algorithm>
+#include <thread>
+#include <optional>
 
 namespace hlr {
 namespace {
@@ -332,6 +335,46 @@ TEST(ExactKernel, ViewCoordinatesAreTheExactDotProducts) {
     ++checked;
   }
   EXPECT_GT(checked, 3500u);
+}
+
+// A point's three view coordinates share one allocation (view.hpp's RowDotBlock): each must keep
+// its exact value until its own last handle goes, in whatever order the three go, after the frame
+// is gone and on another thread (the sanitized build checks the memory).
+TEST(ExactKernel, ViewCoordinatesOutliveEachOtherAndTheFrame) {
+  using Q = CGAL::Exact_rational;
+  View view;
+  named_view("iso", view);
+  const std::array<Q, 3> d{view.direction[0], view.direction[1], view.direction[2]};
+  const std::array<Q, 3> up{view.up[0], view.up[1], view.up[2]};
+  auto cross = [](const std::array<Q, 3>& a, const std::array<Q, 3>& b) {
+    return std::array<Q, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  const std::array<Q, 3> x = cross(d, up), y = cross(x, d), z{-d[0], -d[1], -d[2]};
+  const Vec3 p{0.25, -3.5, 1e9 + 0.5};
+  const std::array<Q, 3> mid{(Q(p[0]) + 1) / 2, (Q(p[1]) + 2) / 2, (Q(p[2]) + 3) / 2};
+  int order[3] = {0, 1, 2};
+  do {
+    for (const bool constructed : {false, true}) {
+      std::array<std::optional<ExactKernel::FT>, 3> kept;
+      {
+        const ViewFrame<ExactKernel> frame(view);
+        const auto v = constructed ? frame.to_view(CGAL::midpoint(ExactKernel::Point_3(p[0], p[1], p[2]),
+                                                                  ExactKernel::Point_3(1, 2, 3)))
+                                   : frame.to_view(p);
+        kept = {v.x, v.y, v.z};
+      }
+      const std::array<Q, 3>* rows[3] = {&x, &y, &z};
+      for (const int axis : order) {
+        const auto& row = *rows[axis];
+        const Q want = constructed ? row[0] * mid[0] + row[1] * mid[1] + row[2] * mid[2]
+                                   : row[0] * Q(p[0]) + row[1] * Q(p[1]) + row[2] * Q(p[2]);
+        Q got;
+        std::thread([&] { got = Q(kept[std::size_t(axis)]->exact()); }).join();
+        EXPECT_EQ(got, want) << "axis " << axis << (constructed ? ", constructed point" : ", input point");
+        kept[std::size_t(axis)].reset();
+      }
+    }
+  } while (std::next_permutation(order, order + 3));
 }
 
 // ModelPlane decides, on the input doubles, what the view-space plane of three points decides after

@@ -51,7 +51,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
         } else if (line.has_model_ends) {
           auto settled = [](const FT& c) { return G::interval(c).first == G::interval(c).second; };
           if (!settled(p.x) || !settled(p.y) || !settled(p.z))
-            v = recipe_rounding.nearest({ModelPointRecipe::Kind::input_point, end == 0 ? line.model_a : line.model_b});
+            v = recipe_rounding.nearest({ModelPointRecipe::Kind::input_point, lines.model_end(line, end)});
         }
         if (v) {
           for (int axis = 0; axis < 3; ++axis) written[axis] = (*v)[axis] / frame.scale(axis) + 0.0;

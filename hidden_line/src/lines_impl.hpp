@@ -754,6 +754,7 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
     out.lines.reserve(line_count);
     owns.reserve(line_count);
     segments.reserve(line_count);
+    for (const Mesh& mesh : meshes) out.model_vertices.push_back(mesh.vertices);
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       const NearCut<K>& cut = sources.near_cuts[m];
       for (const FeatureEdge& edge : edges[m]) {
@@ -769,8 +770,6 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         line.v0 = edge.v0;
         line.v1 = edge.v1;
         line.has_model_ends = (*ends)[0] == edge.v0 && (*ends)[1] == edge.v1;
-        line.model_a = meshes[m].vertices[edge.v0];
-        line.model_b = meshes[m].vertices[edge.v1];
         add(std::move(line), own_sources({{m, &edge.faces}}));
       }
     }
@@ -935,24 +934,30 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   });
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
   // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
-  for (int pass = 0; pass < 3; ++pass)
-    for (std::uint32_t i = 0; i < lines.lines.size(); ++i) {
-      const bool smooth = lines.lines[i].kind == FeatureKind::smooth;
-      if (smooth != (pass == 2) || (smooth && pass == 1)) continue;
-      for (const auto& p : lines.lines[i].pieces)
-        if (p.visible == (pass != 1)) spans.push_back({i, p.t0, p.t1, p.visible, smooth});
-    }
+  auto for_each_span = [&](auto&& add) {
+    for (int pass = 0; pass < 3; ++pass)
+      for (std::uint32_t i = 0; i < lines.lines.size(); ++i) {
+        const bool smooth = lines.lines[i].kind == FeatureKind::smooth;
+        if (smooth != (pass == 2) || (smooth && pass == 1)) continue;
+        for (const auto& p : lines.lines[i].pieces)
+          if (p.visible == (pass != 1)) add(i, p, smooth);
+      }
+  };
+  std::size_t span_count = 0;
+  for_each_span([&](std::uint32_t, const LinePiece<K>&, bool) { ++span_count; });
+  spans.reserve(span_count);
+  for_each_span([&](std::uint32_t i, const LinePiece<K>& p, bool smooth) { spans.push_back({i, p.t0, p.t1, p.visible, smooth}); });
 
   // Whether two lines' images are collinear, decided on their own ends: on the input coordinates
   // where both are mesh edges (exact zeros there are common, and cheap), else on the images.
   auto collinear_lines = [&](std::uint32_t i, std::uint32_t j) {
     const FeatureLine<K>&li = lines.lines[i], &lj = lines.lines[j];
     if (li.has_model_ends && lj.has_model_ends) {
-      if (const auto& e = lines.view_eye)
-        return collinear_seen_from(li.model_a, li.model_b, lj.model_a, *e) &&
-               collinear_seen_from(li.model_a, li.model_b, lj.model_b, *e);
+      const Vec3 &ia = lines.model_end(li, 0), &ib = lines.model_end(li, 1);
+      const Vec3 &ja = lines.model_end(lj, 0), &jb = lines.model_end(lj, 1);
+      if (const auto& e = lines.view_eye) return collinear_seen_from(ia, ib, ja, *e) && collinear_seen_from(ia, ib, jb, *e);
       const Vec3& d = lines.view_direction;
-      return collinear_in_view(li.model_a, li.model_b, lj.model_a, d) && collinear_in_view(li.model_a, li.model_b, lj.model_b, d);
+      return collinear_in_view(ia, ib, ja, d) && collinear_in_view(ia, ib, jb, d);
     }
     const ImageEnds &a = images[i], &b = images[j];
     return G::orientation(a.a, a.b, b.a) == 0 && G::orientation(a.a, a.b, b.b) == 0;
@@ -1083,52 +1088,66 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   UnionFind groups(n);
   for (const Joined& mine : joined)
     for (const auto& [i, j] : mine.pairs) groups.join(i, j);
-  std::vector<std::int32_t> group_of_root(n, -1);
-  std::vector<std::vector<std::uint32_t>> group_spans;  // span indices, in span order
-  for (std::uint32_t s = 0; s < spans.size(); ++s) {
-    std::int32_t& g = group_of_root[groups.find(spans[s].line)];
-    if (g < 0) {
-      g = std::int32_t(group_spans.size());
-      group_spans.emplace_back();
+  // The spans of each group, in span order (group_members from group_start[g]): a counting sort.
+  std::vector<std::uint32_t> span_group(spans.size());
+  std::uint32_t group_count = 0;
+  {
+    std::vector<std::int32_t> group_of_root(n, -1);
+    for (std::uint32_t s = 0; s < spans.size(); ++s) {
+      std::int32_t& g = group_of_root[groups.find(spans[s].line)];
+      if (g < 0) g = std::int32_t(group_count++);
+      span_group[s] = std::uint32_t(g);
     }
-    group_spans[std::size_t(g)].push_back(s);
   }
+  std::vector<std::uint32_t> group_start(group_count + 1, 0), group_members(spans.size());
+  for (std::uint32_t g : span_group) ++group_start[g + 1];
+  for (std::uint32_t g = 0; g < group_count; ++g) group_start[g + 1] += group_start[g];
+  {
+    std::vector<std::uint32_t> next(group_start.begin(), group_start.end() - 1);
+    for (std::uint32_t s = 0; s < spans.size(); ++s) group_members[next[span_group[s]]++] = s;
+  }
+  // A group whose spans all lie on one line draws each of them whole: nearly every group of a large
+  // drawing. Its segments go straight to their places; only the other groups are solved apart.
+  std::vector<char> group_alone(group_count, 1);
+  for (std::uint32_t g = 0; g < group_count; ++g)
+    for (std::uint32_t k = group_start[g] + 1; k < group_start[g + 1]; ++k)
+      if (spans[group_members[k]].line != spans[group_members[group_start[g]]].line) group_alone[g] = 0;
 
   // One group's spans in order: what each adds to the drawing, with its span index. A span of a
   // line alone in its group is drawn whole.
-  auto solve_group = [&](const std::vector<std::uint32_t>& members,
+  // A span drawn whole.
+  auto whole = [&](std::uint32_t s) {
+    const Span& span = spans[s];
+    const ImageEnds& ends = images[span.line];
+    const FeatureLine<K>& line = lines.lines[span.line];
+    const int end0 = detail::ImageLine<K>::exact_end(span.t0), end1 = detail::ImageLine<K>::exact_end(span.t1);
+    std::optional<detail::ImageLine<K>> image;
+    if (end0 != 0 || end1 != 1) image.emplace(ends.a, ends.b, line.a, line.b);
+    return DrawnSegment<K>{end0 == 0 ? ends.a : image->at(span.t0), end1 == 1 ? ends.b : image->at(span.t1), span.visible,
+                           line.mesh, line.meeting_degrees, span.line, span.thin, span.t0, span.t1};
+  };
+  auto solve_group = [&](std::span<const std::uint32_t> members,
                          std::vector<std::pair<std::uint32_t, DrawnSegment<K>>>& emitted) {
-    const bool alone = std::all_of(members.begin(), members.end(),
-                                   [&](std::uint32_t s) { return spans[s].line == spans[members.front()].line; });
     std::vector<DrawnSegment<K>> out;
     std::vector<std::uint32_t> drawn_line;  // parallel to out
-    std::optional<detail::LooseGrid> grid;
-    if (!alone) {
-      CGAL::Bbox_2 group_domain;
-      for (std::uint32_t s : members) group_domain += images[spans[s].line].bbox();
-      grid.emplace(group_domain, members.size());
-    }
+    CGAL::Bbox_2 group_domain;
+    for (std::uint32_t s : members) group_domain += images[spans[s].line].bbox();
+    detail::LooseGrid grid(group_domain, members.size());
     for (std::uint32_t s : members) {
       const Span& span = spans[s];
       const ImageEnds& ends = images[span.line];
       const FeatureLine<K>& line = lines.lines[span.line];
       const int end0 = detail::ImageLine<K>::exact_end(span.t0), end1 = detail::ImageLine<K>::exact_end(span.t1);
-      std::optional<detail::ImageLine<K>> image;
-      if (!alone || end0 != 0 || end1 != 1) image.emplace(ends.a, ends.b, line.a, line.b);
-      const auto a = end0 == 0 ? ends.a : image->at(span.t0), b = end1 == 1 ? ends.b : image->at(span.t1);
-      if (alone) {
-        emitted.emplace_back(s, DrawnSegment<K>{a, b, span.visible, line.mesh, line.meeting_degrees, span.line, span.thin,
-                                                span.t0, span.t1});
-        continue;
-      }
+      const detail::ImageLine<K> image(ends.a, ends.b, line.a, line.b);
+      const auto a = end0 == 0 ? ends.a : image.at(span.t0), b = end1 == 1 ? ends.b : image.at(span.t1);
       std::vector<std::pair<FT, FT>> covered;
-      grid->query(G::bbox(a) + G::bbox(b), [&](std::uint32_t i) {
+      grid.query(G::bbox(a) + G::bbox(b), [&](std::uint32_t i) {
         if (drawn_line[i] == span.line) return;
         // On the inexact kernels collinearity need not be transitive (the double kernel decides it
         // in floating point): each pair is asked again.
         if constexpr (!G::exact_constructions)
           if (!collinear_lines(span.line, drawn_line[i])) return;
-        FT lo = image->param(out[i].a), hi = image->param(out[i].b);
+        FT lo = image.param(out[i].a), hi = image.param(out[i].b);
         if (hi < lo) std::swap(lo, hi);
         lo = std::max(lo, span.t0);
         hi = std::min(hi, span.t1);
@@ -1138,9 +1157,9 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       FT from = span.t0;
       bool at_start = true;  // from is span.t0, whose point is a
       auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
-        const DrawnSegment<K> d{at_start ? a : image->at(t0), to_end ? b : image->at(t1), span.visible, line.mesh,
+        const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
                                 line.meeting_degrees, span.line, span.thin, t0, t1};
-        grid->insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
+        grid.insert(std::uint32_t(out.size()), G::bbox(d.a) + G::bbox(d.b));
         out.push_back(d);
         drawn_line.push_back(span.line);
         emitted.emplace_back(s, d);
@@ -1153,17 +1172,30 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       if (from < span.t1) emit(from, span.t1, true);
     }
   };
-  std::vector<std::vector<std::pair<std::uint32_t, DrawnSegment<K>>>> emitted(group_spans.size());
-  parallel_chunks(group_spans.size(), 256, [&](const auto& range) {
+  std::vector<std::uint32_t> shared;  // the groups of more than one line
+  for (std::uint32_t g = 0; g < group_count; ++g)
+    if (!group_alone[g]) shared.push_back(g);
+  std::vector<std::vector<std::pair<std::uint32_t, DrawnSegment<K>>>> emitted(shared.size());
+  parallel_chunks(shared.size(), 256, [&](const auto& range) {
     stop.check();
-    for (std::size_t g = range.begin(); g != range.end(); ++g) solve_group(group_spans[g], emitted[g]);
+    for (std::size_t k = range.begin(); k != range.end(); ++k) {
+      const std::uint32_t g = shared[k];
+      solve_group({group_members.data() + group_start[g], group_members.data() + group_start[g + 1]}, emitted[k]);
+    }
   });
   // Gathered in span order; a span's segments come from one group, in the order it emitted them.
   std::vector<std::size_t> first(spans.size() + 1, 0);
+  for (std::uint32_t s = 0; s < spans.size(); ++s)
+    if (group_alone[span_group[s]]) first[s + 1] = 1;
   for (const auto& list : emitted)
     for (const auto& e : list) ++first[e.first + 1];
   for (std::size_t s = 0; s < spans.size(); ++s) first[s + 1] += first[s];
   std::vector<DrawnSegment<K>> out(first.back());
+  parallel_chunks(spans.size(), 4096, [&](const auto& range) {
+    stop.check();
+    for (std::size_t s = range.begin(); s != range.end(); ++s)
+      if (group_alone[span_group[s]]) out[first[s]] = whole(std::uint32_t(s));
+  });
   for (auto& list : emitted)
     for (auto& [s, d] : list) out[first[s]++] = std::move(d);
   return out;

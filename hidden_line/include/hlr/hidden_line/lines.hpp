@@ -60,19 +60,19 @@ struct LinePiece {
 template <class K>
 struct FeatureLine {
   ViewPoint<K> a, b;  // view coordinates, unnormalized frame (exact on ExactKernel)
-  FeatureKind kind = FeatureKind::boundary;
-  std::uint32_t mesh = 0;
-  std::uint32_t v0 = 0, v1 = 0;  // the mesh edge's input vertices; unused for intersections
   std::vector<LinePiece<K>> pieces;  // empty when the line projects to a point
   double meeting_degrees = 90;       // intersections: IntersectionSegment::meeting_degrees
-  // Mesh edges: the ends' input coordinates, for predicates decided on them (view_predicates.hpp);
-  // not where the near plane of a perspective view cuts the edge (an end is then constructed).
-  bool has_model_ends = false;
-  Vec3 model_a{}, model_b{};
+  std::uint32_t mesh = 0;
+  std::uint32_t v0 = 0, v1 = 0;  // the mesh edge's input vertices; unused for intersections
   // Intersections in orthographic views on the exact kernel: the index of their ends' rounding in
   // LineSet::rounded_ends.
   static constexpr std::uint32_t kNotRounded = UINT32_MAX;
   std::uint32_t rounded_ends = kNotRounded;
+  FeatureKind kind = FeatureKind::boundary;
+  // Mesh edges whose ends are the input vertices v0 and v1 (LineSet::model_end), for predicates
+  // decided on their input coordinates (view_predicates.hpp); not where the near plane of a
+  // perspective view cuts the edge (an end is then constructed).
+  bool has_model_ends = false;
 };
 
 struct LineStats {
@@ -91,6 +91,12 @@ struct LineSet {
   // See FeatureLine::rounded_ends: the nearest doubles to the ends' view coordinates, worked out
   // from their recipes (RecipeRounding), or nothing where the general path must round them.
   std::vector<std::array<std::optional<std::array<double, 3>>, 2>> rounded_ends;
+  // Per mesh, its input vertices, where lines with FeatureLine::has_model_ends end (kept once here
+  // rather than twice in every line).
+  std::vector<std::vector<Vec3>> model_vertices;
+  const Vec3& model_end(const FeatureLine<K>& line, int end) const {
+    return model_vertices[line.mesh][end == 0 ? line.v0 : line.v1];
+  }
 };
 
 struct LineOptions {

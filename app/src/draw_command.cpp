@@ -4,6 +4,7 @@
 #include "errors.hpp"
 #include "light_options.hpp"
 #include "line_options.hpp"
+#include "program_allocator.hpp"
 #include "run_scope.hpp"
 #include "style_options.hpp"
 #include "subcommand.hpp"
@@ -74,6 +75,10 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   check_point_lights(scene.meshes, options.point_lights);
   job.progress = run.progress();
   job.free_at_exit = true;  // the run ends with the outputs
+  // Below this many faces a run's memory is small, and pages handed back would cost more time
+  // (faulted in again) than they save.
+  constexpr std::size_t kFacesToReturnPages = 100000;
+  if (scene.input.faces >= kFacesToReturnPages) job.output_stage_begins = return_freed_pages;
   exporter::RasterRun raster;
   exporter::LineDrawing drawing;
   if (options.raster > 0) {

@@ -6,6 +6,7 @@
 // stopped by signal N (interrupt.hpp).
 #include "errors.hpp"
 #include "interrupt.hpp"
+#include "program_allocator.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/kernel/kernel.hpp>
@@ -20,9 +21,6 @@
 #include <string>
 #include <vector>
 
-#ifdef HLR_TCMALLOC
-#include <gperftools/malloc_extension.h>
-#endif
 
 #ifndef HLR_VERSION
 #define HLR_VERSION "unknown"
@@ -78,11 +76,7 @@ int report_stop() {
 int main(int argc, char** argv) {
   using namespace hlr::app;
   install_signal_handlers();
-#ifdef HLR_TCMALLOC
-  // A run gives its memory back at exit. Pages handed back sooner are faulted in and zeroed again
-  // by the next stage that grows (0.7 s of a 1M-face draw's output stage, docs/BENCHMARKS.md).
-  MallocExtension::instance()->SetMemoryReleaseRate(0);
-#endif
+  keep_freed_pages();
 
   CLI::App app{"hlr: an exact hidden-line engine for CAD drawings.", "hlr"};
   app.set_version_flag("--version", "hlr " HLR_VERSION);

@@ -118,6 +118,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   // already touched, which costs less than fresh ones, and the peak is lower.
   if (!sorted) release_all_but_image_points(solution->sources);
   if (own_intersections) own_intersections->release();
+  if (options.output_stage_begins) options.output_stage_begins();
   times.lines = seconds_since(mark);
   check();
   progress.report("drawing coincident pieces once (ISO 128 precedence)");

@@ -18,6 +18,7 @@
 #include <hlr/hidden_line/jobs.hpp>
 #include <hlr/hidden_line/shadows.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -47,6 +48,10 @@ struct DrawOptions {
   // the area sort, or null. The exact kernel only (the others ignore it): there the drawing is the
   // same with them and without them.
   const std::vector<std::vector<bool>>* culled_faces = nullptr;
+  // Called once the lines are classified and what only that stage reads is freed, before the
+  // output stage (draw_lines only): where a program may have its allocator hand free pages back
+  // to the operating system (app/src/program_allocator.hpp). Null: nothing is called.
+  std::function<void()> output_stage_begins;
   Progress progress;
 };
 

@@ -75,10 +75,14 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   check_point_lights(scene.meshes, options.point_lights);
   job.progress = run.progress();
   job.free_at_exit = true;  // the run ends with the outputs
-  // Below this many faces a run's memory is small, and pages handed back would cost more time
-  // (faulted in again) than they save.
+  // A large drawing's outputs are made in the pages its lines stage frees, handed back to the
+  // operating system. Below this many faces a run's memory is small, and freeing and faulting
+  // pages in again would cost more time than they save.
   constexpr std::size_t kFacesToReturnPages = 100000;
-  if (scene.input.faces >= kFacesToReturnPages) job.output_stage_begins = return_freed_pages;
+  if (scene.input.faces >= kFacesToReturnPages) {
+    job.output_stage_begins = return_freed_pages;
+    job.free_once_drawn = true;
+  }
   exporter::RasterRun raster;
   exporter::LineDrawing drawing;
   if (options.raster > 0) {

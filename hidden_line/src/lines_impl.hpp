@@ -773,6 +773,7 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         add(std::move(line), own_sources({{m, &edge.faces}}));
       }
     }
+    std::vector<std::vector<FeatureEdge>>().swap(edges);  // each is its line now
     if (options.intersections) {
       // The segments' lines made in place, in parallel, then in perspective those wholly behind
       // the near plane taken out: no copy of their ends is held beside the lines, where the run's

@@ -21,7 +21,6 @@
 #include <string>
 #include <vector>
 
-
 #ifndef HLR_VERSION
 #define HLR_VERSION "unknown"
 #endif

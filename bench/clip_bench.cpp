@@ -162,7 +162,7 @@ hlr::clip::Contour<K> to_hlr(const RawContour& raw, hlr::clip::LineTable<K>& lin
   std::vector<typename hlr::Geometry<K>::Point> points;
   points.reserve(raw.size());
   for (const RawPoint& p : raw) points.push_back(hlr::Geometry<K>::point(p[0], p[1]));
-  return hlr::clip::make_contour<K>(points, lines);
+  return hlr::clip::make_contour<K>(std::move(points), lines);
 }
 
 template <class K>

@@ -193,6 +193,36 @@ void for_each_overlapping_pair(const std::vector<InputEdge>& edges, SweepBuffers
   }
 }
 
+// A raw point's interval box, as the exact kernel keeps it.
+struct IntervalBox {
+  double xinf, xsup, yinf, ysup;
+  std::uint32_t point;
+};
+
+// compare_xy on interval boxes: -1 or +1 where they decide, 0 when both are the same point of
+// doubles, 2 when only the exact values can tell.
+inline int compare_xy_intervals(const IntervalBox& a, const IntervalBox& b) {
+  if (a.xsup < b.xinf) return -1;
+  if (a.xinf > b.xsup) return 1;
+  if (a.xinf != a.xsup || b.xinf != b.xsup) return 2;
+  if (a.ysup < b.yinf) return -1;
+  if (a.yinf > b.ysup) return 1;
+  return a.yinf == a.ysup && b.yinf == b.ysup ? 0 : 2;
+}
+
+// Puts `items` into `out` in order of key(item) < buckets, stably, by counting; the items of
+// bucket b are out[start[b] .. start[b + 1]).
+template <class T, class Key>
+void bucket_by(const std::vector<T>& items, std::size_t buckets, Key key, std::vector<std::uint32_t>& start,
+               std::vector<T>& out, std::vector<std::uint32_t>& fill) {
+  start.assign(buckets + 1, 0);
+  for (const T& item : items) ++start[key(item) + 1];
+  for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+  fill.assign(start.begin(), start.end() - 1);
+  out.resize(items.size());
+  for (const T& item : items) out[fill[key(item)]++] = item;
+}
+
 // Union-find over graph edges.
 struct Groups {
   std::vector<std::uint32_t> parent;
@@ -250,9 +280,14 @@ class Overlay {
   CrossingCache<K>* crossings_ = nullptr;
   std::vector<P> raw_;                 // input vertices, then constructed intersections
   std::vector<InputEdge> edges_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> splits_;  // (edge, raw point) on its interior
+  struct Split {
+    std::uint32_t edge, point;  // a raw point on the edge's interior
+  };
+  std::vector<Split> splits_, sorted_splits_;
+  std::vector<std::uint32_t> split_start_;  // per edge, into sorted_splits_
   SweepBuffers sweep_;
-  std::vector<std::uint32_t> order_;
+  std::vector<std::uint32_t> order_;   // raw points in xy order (inexact kernels)
+  std::vector<IntervalBox> approx_;    // the same on the exact kernel
   std::vector<std::uint32_t> canon_;   // raw point -> vertex
   std::vector<P> vertices_;
   struct Piece {
@@ -261,7 +296,8 @@ class Overlay {
     std::uint8_t role;
     LineId line;
   };
-  std::vector<Piece> pieces_;
+  std::vector<Piece> pieces_, sorted_pieces_;
+  std::vector<std::uint32_t> piece_start_;  // per vertex, into sorted_pieces_ (by lo)
   std::vector<GraphEdge> graph_;
   std::vector<std::uint32_t> ring_start_, ring_, pos_;  // half-edges around each vertex, CCW
   std::vector<std::uint8_t> upper_;                    // per half-edge: points into the upper half-plane
@@ -368,28 +404,50 @@ void Overlay<K>::intersect_edges() {
 template <class K>
 void Overlay<K>::build_graph() {
   // 1. vertices: raw points up to exact equality.
-  order_.resize(raw_.size());
-  std::iota(order_.begin(), order_.end(), 0u);
-  std::sort(order_.begin(), order_.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return G::compare_xy(raw_[a], raw_[b]) < 0; });
   canon_.assign(raw_.size(), 0);
   vertices_.clear();
-  for (std::size_t k = 0; k < order_.size(); ++k) {
-    if (k == 0 || !G::equal(raw_[order_[k]], vertices_.back())) vertices_.push_back(raw_[order_[k]]);
-    canon_[order_[k]] = static_cast<std::uint32_t>(vertices_.size() - 1);
+  if constexpr (G::exact_constructions) {
+    // Sorted on the points' intervals side by side rather than through each point's handle; the
+    // kernel is asked only where they cannot decide.
+    approx_.resize(raw_.size());
+    for (std::uint32_t i = 0; i < raw_.size(); ++i) {
+      const auto& a = CGAL::approx(raw_[i]);
+      approx_[i] = {a.x().inf(), a.x().sup(), a.y().inf(), a.y().sup(), i};
+    }
+    auto compare = [&](const IntervalBox& a, const IntervalBox& b) {
+      const int c = compare_xy_intervals(a, b);
+      if (c != 2) {
+        PredicateStats::add(PredicateFamily::comparison, DecidedBy::interval);
+        return c;
+      }
+      return G::compare_xy(raw_[a.point], raw_[b.point]);
+    };
+    std::sort(approx_.begin(), approx_.end(), [&](const IntervalBox& a, const IntervalBox& b) { return compare(a, b) < 0; });
+    for (std::size_t k = 0; k < approx_.size(); ++k) {
+      if (k == 0 || compare(approx_[k - 1], approx_[k]) != 0) vertices_.push_back(raw_[approx_[k].point]);
+      canon_[approx_[k].point] = static_cast<std::uint32_t>(vertices_.size() - 1);
+    }
+  } else {
+    order_.resize(raw_.size());
+    std::iota(order_.begin(), order_.end(), 0u);
+    std::sort(order_.begin(), order_.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return G::compare_xy(raw_[a], raw_[b]) < 0; });
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      if (k == 0 || !G::equal(raw_[order_[k]], vertices_.back())) vertices_.push_back(raw_[order_[k]]);
+      canon_[order_[k]] = static_cast<std::uint32_t>(vertices_.size() - 1);
+    }
   }
   // Vertex ids follow xy order, so comparing ids compares points.
 
   // 2. pieces: each edge cut at its split points, in order along the edge.
-  std::sort(splits_.begin(), splits_.end());
+  bucket_by(splits_, edges_.size(), [](const Split& s) { return s.edge; }, split_start_, sorted_splits_, scratch_);
   pieces_.clear();
   std::vector<std::uint32_t>& cuts = scratch_;
-  std::size_t s = 0;
   for (std::uint32_t i = 0; i < edges_.size(); ++i) {
     const InputEdge& e = edges_[i];
     cuts.clear();
     cuts.push_back(canon_[e.a]);
-    for (; s < splits_.size() && splits_[s].first == i; ++s) cuts.push_back(canon_[splits_[s].second]);
+    for (std::uint32_t k = split_start_[i]; k < split_start_[i + 1]; ++k) cuts.push_back(canon_[sorted_splits_[k].point]);
     cuts.push_back(canon_[e.b]);
     const bool ascending = cuts.front() < cuts.back();
     if (ascending) std::sort(cuts.begin(), cuts.end());
@@ -401,11 +459,14 @@ void Overlay<K>::build_graph() {
     }
   }
 
-  // 3. graph edges: coincident pieces merged.
-  std::sort(pieces_.begin(), pieces_.end(),
-            [](const Piece& a, const Piece& b) { return a.lo != b.lo ? a.lo < b.lo : a.hi < b.hi; });
+  // 3. graph edges: coincident pieces merged. Pieces are put in order of lo by counting, then each
+  // vertex's few in order of hi.
+  bucket_by(pieces_, vertices_.size(), [](const Piece& p) { return p.lo; }, piece_start_, sorted_pieces_, scratch_);
+  for (std::size_t v = 0; v + 1 < piece_start_.size(); ++v)
+    std::sort(sorted_pieces_.begin() + piece_start_[v], sorted_pieces_.begin() + piece_start_[v + 1],
+              [](const Piece& a, const Piece& b) { return a.hi < b.hi; });
   graph_.clear();
-  for (const Piece& p : pieces_) {
+  for (const Piece& p : sorted_pieces_) {
     if (graph_.empty() || graph_.back().lo != p.lo || graph_.back().hi != p.hi)
       graph_.push_back({p.lo, p.hi, {0, 0}, {false, false}, {0, 0}, {-1, -1}, {-1, -1}});
     GraphEdge& g = graph_.back();
@@ -532,6 +593,8 @@ std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
 
   auto emit = [&](std::size_t from) {
     Contour<K> c;
+    c.points.reserve(path.size() - from);
+    c.lines.reserve(path.size() - from);
     for (std::size_t k = from; k < path.size(); ++k) {
       const std::uint32_t he = path[k];
       const GraphEdge& e = graph_[he >> 1];
@@ -564,8 +627,9 @@ std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
       const std::uint32_t first = ring_start_[v], deg = ring_start_[v + 1] - first;
       const std::uint32_t back = pos_[he ^ 1] - first;
       std::uint32_t next = UINT32_MAX;
-      for (std::uint32_t step = 1; step < deg; ++step) {
-        const std::uint32_t cand = ring_[first + (back + deg - step) % deg];
+      for (std::uint32_t step = 1, k = back; step < deg; ++step) {
+        k = k == 0 ? deg - 1 : k - 1;
+        const std::uint32_t cand = ring_[first + k];
         if (result_[cand] & bit) {
           next = cand;
           break;
@@ -585,9 +649,10 @@ std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
   // Holes go to the innermost outer contour that contains them. Result contours never cross, so
   // of two outer contours that both contain a hole, one lies inside the other.
   std::vector<Polygon<K>> polygons(outers.size());
-  std::vector<CGAL::Bbox_2> boxes(outers.size());
+  // The outer contours' boxes are needed only to choose among several for a hole.
+  std::vector<CGAL::Bbox_2> boxes(holes.empty() || outers.size() < 2 ? 0 : outers.size());
   for (std::size_t i = 0; i < outers.size(); ++i) {
-    boxes[i] = contour_box(outers[i]);
+    if (!boxes.empty()) boxes[i] = contour_box(outers[i]);
     polygons[i].outer = std::move(outers[i]);
   }
   // Where `inner` lies relative to `outer`, judged on its first vertex off that contour; the
@@ -758,13 +823,14 @@ std::vector<ClipResult<K>> clip_list(std::span<const Polygon<K>> subjects, const
 }
 
 template <class K>
-Contour<K> make_contour(const std::vector<typename Geometry<K>::Point>& points, LineTable<K>& lines) {
+Contour<K> make_contour(std::vector<typename Geometry<K>::Point> points, LineTable<K>& lines) {
   Contour<K> c;
-  c.points = points;
-  const std::size_t n = points.size();
+  c.points = std::move(points);
+  const std::size_t n = c.points.size();
+  c.lines.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     c.lines.push_back(static_cast<LineId>(lines.size()));
-    lines.push_back({points[i], points[(i + 1) % n]});
+    lines.push_back({c.points[i], c.points[(i + 1) % n]});
   }
   return c;
 }

@@ -71,7 +71,7 @@ struct ClipError : std::runtime_error {
 
 // Builds a contour from raw points, registering each edge as a new line of `lines`.
 template <class K>
-Contour<K> make_contour(const std::vector<typename Geometry<K>::Point>& points, LineTable<K>& lines);
+Contour<K> make_contour(std::vector<typename Geometry<K>::Point> points, LineTable<K>& lines);
 
 // Orients a polygon in place (outer counter-clockwise, holes clockwise) and drops repeated
 // consecutive points. Returns a description of the first defect, or nothing if the polygon is a
@@ -166,7 +166,7 @@ typename Geometry<K>::FT twice_area(const Polygon<K>& polygon);
 // Explicit instantiations live in the clipper library; no translation unit outside it
 // instantiates the algorithm.
 #define HLR_CLIPPER_DECLARE(K, EXTERN)                                                               \
-  EXTERN template Contour<K> make_contour<K>(const std::vector<Geometry<K>::Point>&, LineTable<K>&); \
+  EXTERN template Contour<K> make_contour<K>(std::vector<Geometry<K>::Point>, LineTable<K>&);        \
   EXTERN template std::optional<std::string> normalize_polygon<K>(Polygon<K>&);                      \
   EXTERN template class ClipRegion<K>;                                                               \
   EXTERN template ClipResult<K> clip_polygon<K>(const Polygon<K>&, const ClipRegion<K>&);            \

@@ -316,9 +316,13 @@ void Overlay<K>::add_contour(const Contour<K>& c, std::uint8_t role, std::uint32
   const std::uint32_t base = static_cast<std::uint32_t>(raw_.size());
   const std::uint32_t n = static_cast<std::uint32_t>(c.points.size());
   for (const auto& p : c.points) raw_.push_back(p);
+  const CGAL::Bbox_2 first_box = G::bbox(c.points[0]);
+  CGAL::Bbox_2 box_a = first_box;
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::uint32_t j = i + 1 == n ? 0 : i + 1;
-    CGAL::Bbox_2 box = G::bbox(c.points[i]) + G::bbox(c.points[j]);
+    const CGAL::Bbox_2 box_b = j == 0 ? first_box : G::bbox(c.points[j]);
+    const CGAL::Bbox_2 box = box_a + box_b;
+    box_a = box_b;
     // A clip edge that cannot reach the subject's box can neither cut it nor bound a result.
     if (filter && !boxes_overlap(box, *filter)) continue;
     InputEdge& e = edges_.emplace_back(
@@ -463,8 +467,9 @@ void Overlay<K>::build_graph() {
   // vertex's few in order of hi.
   bucket_by(pieces_, vertices_.size(), [](const Piece& p) { return p.lo; }, piece_start_, sorted_pieces_, scratch_);
   for (std::size_t v = 0; v + 1 < piece_start_.size(); ++v)
-    std::sort(sorted_pieces_.begin() + piece_start_[v], sorted_pieces_.begin() + piece_start_[v + 1],
-              [](const Piece& a, const Piece& b) { return a.hi < b.hi; });
+    if (piece_start_[v + 1] - piece_start_[v] > 1)
+      std::sort(sorted_pieces_.begin() + piece_start_[v], sorted_pieces_.begin() + piece_start_[v + 1],
+                [](const Piece& a, const Piece& b) { return a.hi < b.hi; });
   graph_.clear();
   for (const Piece& p : sorted_pieces_) {
     if (graph_.empty() || graph_.back().lo != p.lo || graph_.back().hi != p.hi)
@@ -584,7 +589,8 @@ void Overlay<K>::classify(int role, const Polygon<K>& polygon) {
 // Traces the contours of one result list and assembles polygons with holes.
 template <class K>
 std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
-  std::vector<Contour<K>> outers, holes;
+  std::vector<Polygon<K>> polygons;  // an outer contour each, holes added at the end
+  std::vector<Contour<K>> holes;
   std::vector<std::int32_t>& on_path = on_path_;
   on_path.assign(vertices_.size(), -1);
   std::vector<std::uint32_t>& path = scratch_;  // half-edges of the walk so far
@@ -611,7 +617,8 @@ std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
       c.lines.erase(c.lines.begin());
     }
     if (c.points.size() < 3) throw ClipError("traced a degenerate contour");
-    (contour_orientation<K>(c.points) > 0 ? outers : holes).push_back(std::move(c));
+    if (contour_orientation<K>(c.points) > 0) polygons.emplace_back().outer = std::move(c);
+    else holes.push_back(std::move(c));
   };
 
   for (std::uint32_t start = 0; start < result_.size(); ++start) {
@@ -648,13 +655,9 @@ std::vector<Polygon<K>> Overlay<K>::trace(std::uint8_t bit) {
 
   // Holes go to the innermost outer contour that contains them. Result contours never cross, so
   // of two outer contours that both contain a hole, one lies inside the other.
-  std::vector<Polygon<K>> polygons(outers.size());
   // The outer contours' boxes are needed only to choose among several for a hole.
-  std::vector<CGAL::Bbox_2> boxes(holes.empty() || outers.size() < 2 ? 0 : outers.size());
-  for (std::size_t i = 0; i < outers.size(); ++i) {
-    if (!boxes.empty()) boxes[i] = contour_box(outers[i]);
-    polygons[i].outer = std::move(outers[i]);
-  }
+  std::vector<CGAL::Bbox_2> boxes(holes.empty() || polygons.size() < 2 ? 0 : polygons.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = contour_box(polygons[i].outer);
   // Where `inner` lies relative to `outer`, judged on its first vertex off that contour; the
   // midpoint of an edge if all its vertices are on it.
   auto contains = [&](const Contour<K>& outer, const Contour<K>& inner) {

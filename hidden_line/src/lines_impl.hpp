@@ -365,11 +365,11 @@ class Classifier {
     // Orthographic views on the exact kernel decide depths in model space, on the input doubles.
     if constexpr (G::exact_constructions)
       if (!frame.perspective()) {
-        model_planes_.reserve(sources.polygons.size());
+        model_turns_.reserve(sources.polygons.size());
         for (const auto& sp : sources.polygons) {
           const auto& v = meshes[sp.mesh].vertices;
-          model_planes_.emplace_back(v[sp.plane_points[0]], v[sp.plane_points[1]], v[sp.plane_points[2]],
-                                     frame.view().direction);
+          const ModelPlane plane(v[sp.plane_points[0]], v[sp.plane_points[1]], v[sp.plane_points[2]], frame.view().direction);
+          model_turns_.push_back(static_cast<std::int8_t>(plane.turn()));
         }
       }
     nearest_.reserve(covers_.size());
@@ -414,7 +414,7 @@ class Classifier {
     const auto [i0, i1] = *sources_.near_cuts[mesh].edge_ends(v0, v1);
     Query q{view_points_[mesh][i0], view_points_[mesh][i1], images[i0], images[i1], line_of_edge(mesh, v0, v1), mesh,
             i0 == v0 ? v0 : kNoVertex, i1 == v1 ? v1 : kNoVertex};
-    if (!model_planes_.empty()) {  // orthographic: the ends are input vertices
+    if (!model_turns_.empty()) {  // orthographic: the ends are input vertices
       q.model_a = &meshes_[mesh].vertices[i0];
       q.model_b = &meshes_[mesh].vertices[i1];
     }
@@ -496,7 +496,7 @@ class Classifier {
 
   // Splits the line into pieces; `own` are the sources whose plane contains the line (they never
   // lie strictly nearer), sorted.
-  std::vector<LinePiece<K>> classify(const Query& q, const std::vector<std::int32_t>& own, Scratch& scratch) const {
+  std::vector<LinePiece<K>> classify(const Query& q, std::span<const std::int32_t> own, Scratch& scratch) const {
     const ViewPoint<K>&a = q.a, &b = q.b;
     const P &pa = q.pa, &pb = q.pb;
     if (G::equal(pa, pb)) return {};
@@ -522,8 +522,8 @@ class Classifier {
       auto [it, added] = scratch.by_source.try_emplace(source);
       if (!added) return it->second;
       if constexpr (G::exact_constructions)
-        if (!model_planes_.empty()) {
-          const ModelPlane& plane = model_planes_[source];
+        if (!model_turns_.empty()) {
+          const ModelPlane plane = model_plane(source);
           Depth<K>& d = it->second;
           // The ends as input vertices or as exact points (a constructed line has no vertex).
           auto against = [&](const auto& pa, const auto& pb) {
@@ -668,7 +668,14 @@ class Classifier {
   const std::vector<Mesh>& meshes_;
   const Sources<K>& sources_;
   std::vector<Cover<K>> covers_;
-  std::vector<ModelPlane> model_planes_;  // per source, in orthographic views on the exact kernel
+  // Per source, in orthographic views on the exact kernel: its plane's turn (ModelPlane::turn), the
+  // plane made again from it where needed (one byte kept per source instead of three points).
+  std::vector<std::int8_t> model_turns_;
+  ModelPlane model_plane(std::uint32_t source) const {
+    const auto& sp = sources_.polygons[source];
+    const auto& v = meshes_[sp.mesh].vertices;
+    return ModelPlane::with_turn(v[sp.plane_points[0]], v[sp.plane_points[1]], v[sp.plane_points[2]], model_turns_[source]);
+  }
   const std::vector<std::vector<ViewPoint<K>>>& view_points_;
   std::vector<std::vector<std::int32_t>> source_of_face_;
   // Per mesh: vertex v's sources are sources[start[v] .. start[v + 1]), sorted.
@@ -726,21 +733,15 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
   // parallel over chunks of lines: each line is classified on its own, so the result does not
   // depend on the number of threads.
   LineSet<K> out;
-  std::vector<std::vector<std::int32_t>> owns;
-  std::vector<const IntersectionSegment*> segments;  // per line: its intersection segment, or null
+  // Line i's own sources are own[own_start[i] .. own_start[i + 1]), sorted: one array for all.
+  std::vector<std::int32_t> own;
+  std::vector<std::uint32_t> own_start{0};
   using Sides = std::initializer_list<std::pair<std::uint32_t, const std::vector<std::uint32_t>*>>;
-  auto own_sources = [&](Sides sides) {
-    std::vector<std::int32_t> own;
+  // Calls use(source) for each source of the faces on the line's sides.
+  auto for_each_own_source = [&](Sides sides, auto&& use) {
     for (const auto& [mesh, faces] : sides)
       for (std::uint32_t f : *faces)
-        if (const std::int32_t s = classifier.source_of_face(mesh, f); s >= 0) own.push_back(s);
-    std::sort(own.begin(), own.end());
-    return own;
-  };
-  auto add = [&](FeatureLine<K> line, std::vector<std::int32_t> own) {
-    out.lines.push_back(std::move(line));
-    owns.push_back(std::move(own));
-    segments.push_back(nullptr);
+        if (const std::int32_t s = classifier.source_of_face(mesh, f); s >= 0) use(s);
   };
 
   tbb::enumerable_thread_specific<typename Classifier<K>::Scratch> scratch;
@@ -752,8 +753,7 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
     std::size_t line_count = options.intersections ? intersections.size() : 0;
     for (const Mesh& mesh : meshes) line_count += edges.emplace_back(feature_edges(mesh, frame.view(), options.features)).size();
     out.lines.reserve(line_count);
-    owns.reserve(line_count);
-    segments.reserve(line_count);
+    own_start.reserve(line_count + 1);
     for (const Mesh& mesh : meshes) out.model_vertices.push_back(mesh.vertices);
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       const NearCut<K>& cut = sources.near_cuts[m];
@@ -770,63 +770,81 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         line.v0 = edge.v0;
         line.v1 = edge.v1;
         line.has_model_ends = (*ends)[0] == edge.v0 && (*ends)[1] == edge.v1;
-        add(std::move(line), own_sources({{m, &edge.faces}}));
+        out.lines.push_back(std::move(line));
+        for_each_own_source({{m, &edge.faces}}, [&](std::int32_t s) { own.push_back(s); });
+        std::sort(own.begin() + own_start.back(), own.end());
+        own_start.push_back(std::uint32_t(own.size()));
       }
     }
     std::vector<std::vector<FeatureEdge>>().swap(edges);  // each is its line now
+    const std::size_t first_intersection = out.lines.size();
     if (options.intersections) {
       // The segments' lines made in place, in parallel, then in perspective those wholly behind
       // the near plane taken out: no copy of their ends is held beside the lines, where the run's
-      // memory peaks.
-      const std::size_t first = out.lines.size(), n = intersections.size();
-      out.lines.resize(first + n);
-      owns.resize(first + n);
-      segments.resize(first + n);
+      // memory peaks. Their own sources are counted first, then written in place.
+      const std::size_t n = intersections.size();
+      out.lines.resize(first_intersection + n);
+      own_start.resize(first_intersection + n + 1);
       const bool rounds = !frame.perspective() && Geometry<K>::exact_constructions;
       if (rounds) out.rounded_ends.resize(n);
-      std::vector<bool> behind;  // perspective: per segment, whether it is wholly behind the near plane
+      // Perspective: per segment, whether it is wholly behind the near plane (bytes, not bits: the
+      // chunks write it side by side).
+      std::vector<std::uint8_t> behind;
       if (frame.perspective()) behind.resize(n);
       parallel_chunks(n, 1024, [&](const auto& range) {
         options.stop.check();
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
           const IntersectionSegment& s = intersections[i];
-          FeatureLine<K>& line = out.lines[first + i];
+          FeatureLine<K>& line = out.lines[first_intersection + i];
           line.kind = FeatureKind::intersection;
           line.mesh = s.mesh_a;
           line.meeting_degrees = s.meeting_degrees;
           if (rounds) line.rounded_ends = std::uint32_t(i);
-          segments[first + i] = &s;
+          std::uint32_t count = 0;
           if (frame.perspective()) {
             const auto ends = frame.to_view_clipped(s.a, s.b);
-            if (!ends) {
-              behind[i] = true;
-              continue;
+            if (ends) {
+              line.a = ends->first;
+              line.b = ends->second;
             }
-            line.a = ends->first;
-            line.b = ends->second;
+            behind[i] = !ends;
           }
-          owns[first + i] = own_sources({{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}});
+          if (behind.empty() || !behind[i]) for_each_own_source({{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}}, [&](std::int32_t) { ++count; });
+          own_start[first_intersection + i + 1] = count;
+        }
+      });
+      for (std::size_t i = first_intersection; i < first_intersection + n; ++i) own_start[i + 1] += own_start[i];
+      own.resize(own_start.back());
+      parallel_chunks(n, 1024, [&](const auto& range) {
+        options.stop.check();
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          if (!behind.empty() && behind[i]) continue;
+          const IntersectionSegment& s = intersections[i];
+          const auto begin = own.begin() + own_start[first_intersection + i];
+          auto at = begin;
+          for_each_own_source({{s.mesh_a, &s.faces_a}, {s.mesh_b, &s.faces_b}}, [&](std::int32_t source) { *at++ = source; });
+          std::sort(begin, at);
         }
       });
       if (frame.perspective()) {
-        std::size_t kept = first;
+        // A line behind the near plane has no own sources: taking out its start keeps the others'.
+        std::size_t kept = first_intersection;
         for (std::size_t i = 0; i < n; ++i) {
           if (behind[i]) continue;
-          if (kept != first + i) {
-            out.lines[kept] = std::move(out.lines[first + i]);
-            owns[kept] = std::move(owns[first + i]);
-            segments[kept] = segments[first + i];
+          if (kept != first_intersection + i) {
+            out.lines[kept] = std::move(out.lines[first_intersection + i]);
+            own_start[kept] = own_start[first_intersection + i];
           }
           ++kept;
         }
         out.lines.resize(kept);
-        owns.resize(kept);
-        segments.resize(kept);
+        own_start[kept] = std::uint32_t(own.size());
+        own_start.resize(kept + 1);
       } else {
         // Most crossings end two segments as one lazy point: its view point is made once.
         for_each_view_end(frame, intersections, options.stop,
                           [&](std::uint32_t end, const ViewPoint<K>& point, const std::optional<std::array<double, 3>>& rounded) {
-                            FeatureLine<K>& line = out.lines[first + end / 2];
+                            FeatureLine<K>& line = out.lines[first_intersection + end / 2];
                             (end % 2 == 0 ? line.a : line.b) = point;
                             if (rounds) out.rounded_ends[end / 2][end % 2] = rounded;
                           });
@@ -838,20 +856,19 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
       auto& mine = scratch.local();
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         FeatureLine<K>& line = out.lines[i];
-        const IntersectionSegment* s = frame.perspective() ? nullptr : segments[i];  // ends uncut
+        // Orthographic: an intersection line's ends are its segment's, uncut.
+        const IntersectionSegment* s =
+            frame.perspective() || i < first_intersection ? nullptr : &intersections[i - first_intersection];
         const auto query = line.kind == FeatureKind::intersection
                                ? classifier.constructed(line.a, line.b, {s ? &s->a : nullptr, s ? &s->b : nullptr})
                                : classifier.mesh_edge(line.mesh, line.v0, line.v1);
-        line.pieces = classifier.classify(query, owns[i], mine);
+        line.pieces = classifier.classify(query, std::span(own).subspan(own_start[i], own_start[i + 1] - own_start[i]), mine);
       }
     });
   } catch (const Cancelled&) {
     // Freeing millions of lazy exact numbers one by one would delay the stop by about a second at
     // 1M faces: a run that ends at once leaves them to the operating system.
-    if (options.free_at_exit) {
-      (void)new LineSet<K>(std::move(out));
-      (void)new std::vector<std::vector<std::int32_t>>(std::move(owns));
-    }
+    if (options.free_at_exit) (void)new LineSet<K>(std::move(out));
     throw;
   }
   for (const auto& line : out.lines) {

@@ -63,7 +63,11 @@ class ModelPlane {
   using FT = ExactKernel::FT;
 
   ModelPlane(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& direction)
-      : a_(a), b_(b), c_(c), turn_(-sign_of_det(a, b, c, direction)) {}
+      : ModelPlane(a, b, c, -sign_of_det(a, b, c, direction)) {}
+  // The same plane again from its points and turn(), without the determinant: where many planes
+  // are kept, a turn each is kept rather than three points.
+  static ModelPlane with_turn(const Vec3& a, const Vec3& b, const Vec3& c, int turn) { return {a, b, c, turn}; }
+  int turn() const { return turn_; }
 
   // +1 where the plane lies strictly nearer to the viewer than p at p's image, -1 where farther,
   // 0 where p lies in it: the sign of z_plane(p) - z(p) = -volume(p) / n_z, with n_z the sign of
@@ -84,6 +88,8 @@ class ModelPlane {
   }
 
  private:
+  ModelPlane(const Vec3& a, const Vec3& b, const Vec3& c, int turn) : a_(a), b_(b), c_(c), turn_(turn) {}
+
   using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
   static int sign_of_det(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& d) {
     return filtered_sign([&]<class NT>(std::type_identity<NT>) { return view_detail::det_with_direction<NT>(p, q, r, d); });

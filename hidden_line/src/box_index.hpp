@@ -10,7 +10,8 @@
 // size, and a query looks at the cells of each level that can hold a box reaching into it (its
 // own, widened by three quarters of a cell). Boxes are conservative (interval bounds of exact
 // points) and the widening leaves room for rounding, so a query never misses a box that overlaps;
-// it only filters, it decides nothing.
+// it only filters, it decides nothing. A grid that is only queried from some point on can be
+// frozen: each level's cells packed into one array.
 #pragma once
 
 #include <hlr/clipper/clipper.hpp>
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -207,7 +209,7 @@ class LooseGrid {
     height_ = std::max(domain_.ymax() - domain_.ymin(), 1e-300);
     // About one finest cell per box, at most 2^10 x 2^10.
     while (levels_ < 11 && (std::size_t(1) << (2 * (levels_ - 1))) < expected) ++levels_;
-    for (int l = 0; l < levels_; ++l) cells_.emplace_back(std::size_t(1) << (2 * l));
+    cells_.resize(std::size_t(levels_));  // a level's cells are made when a box is first filed there
     filed_.assign(std::size_t(levels_), 0);
     boxes_.reserve(expected);
     // A few ulps of the domain's coordinates: what rounding may move a box's centre by.
@@ -217,9 +219,11 @@ class LooseGrid {
 
   // Files the box (cell_of).
   void insert(std::uint32_t id, const CGAL::Bbox_2& box) {
+    if (!frozen_.empty()) throw std::logic_error("LooseGrid: insert after freeze");
     if (id >= boxes_.size()) boxes_.resize(id + 1);
     boxes_[id] = box;
     const int l = level_of(box);
+    if (cells_[l].empty()) cells_[l].resize(std::size_t(1) << (2 * l));
     cell_of(box, l).push_back(id);
     ++filed_[l];
   }
@@ -227,7 +231,9 @@ class LooseGrid {
   // Takes an inserted id out, so that queries no longer look at it (the area sort's pieces that a
   // clip replaced). The order of ids in a cell changes; queries promise no order.
   void remove(std::uint32_t id) {
+    if (!frozen_.empty()) throw std::logic_error("LooseGrid: remove after freeze");
     const int l = level_of(boxes_[id]);
+    if (cells_[l].empty()) return;
     auto& ids = cell_of(boxes_[id], l);
     const auto it = std::find(ids.begin(), ids.end(), id);
     if (it == ids.end()) return;
@@ -249,15 +255,39 @@ class LooseGrid {
       const long x0 = cell(box.xmin() - mx, domain_.xmin(), w, l), x1 = cell(box.xmax() + mx, domain_.xmin(), w, l);
       const long y0 = cell(box.ymin() - my, domain_.ymin(), h, l), y1 = cell(box.ymax() + my, domain_.ymin(), h, l);
       for (long y = y0; y <= y1; ++y)
-        for (long x = x0; x <= x1; ++x)
-          for (std::uint32_t id : cells_[l][index(l, x, y)])
-            if (CGAL::do_overlap(boxes_[id], box)) {
-              if constexpr (std::is_same_v<decltype(visit(id)), bool>) {
-                if (visit(id)) return;
+        for (long x = x0; x <= x1; ++x) {
+          const std::size_t c = index(l, x, y);
+          const std::uint32_t* first = frozen_.empty() ? cells_[l][c].data() : frozen_[l].ids.data() + frozen_[l].start[c];
+          const std::uint32_t* last = frozen_.empty() ? first + cells_[l][c].size() : frozen_[l].ids.data() + frozen_[l].start[c + 1];
+          for (const std::uint32_t* id = first; id != last; ++id)
+            if (CGAL::do_overlap(boxes_[*id], box)) {
+              if constexpr (std::is_same_v<decltype(visit(*id)), bool>) {
+                if (visit(*id)) return;
               } else {
-                visit(id);
+                visit(*id);
               }
             }
+        }
+    }
+  }
+
+  // For a grid only queried from here on: each level's ids in one array, cell after cell in the
+  // order they were filed (queries visit them as before), without a vector per cell (24 bytes
+  // each, a million cells at the finest level). No insert or remove after.
+  void freeze() {
+    if (!frozen_.empty()) return;
+    frozen_.resize(std::size_t(levels_));
+    for (int l = 0; l < levels_; ++l) {
+      if (filed_[l] == 0) continue;  // never queried
+      Packed& packed = frozen_[l];
+      packed.ids.reserve(filed_[l]);
+      packed.start.reserve(cells_[l].size() + 1);
+      packed.start.push_back(0);
+      for (const auto& ids : cells_[l]) {
+        packed.ids.insert(packed.ids.end(), ids.begin(), ids.end());
+        packed.start.push_back(std::uint32_t(packed.ids.size()));
+      }
+      std::vector<std::vector<std::uint32_t>>().swap(cells_[l]);
     }
   }
 
@@ -285,7 +315,12 @@ class LooseGrid {
   CGAL::Bbox_2 domain_;
   double width_ = 1, height_ = 1, slack_x_ = 0, slack_y_ = 0;
   int levels_ = 1;
-  std::vector<std::vector<std::vector<std::uint32_t>>> cells_;  // per level, per cell
+  std::vector<std::vector<std::vector<std::uint32_t>>> cells_;  // per level, per cell (until frozen)
+  // Once frozen, per level: the ids of cell c are ids[start[c] .. start[c + 1]).
+  struct Packed {
+    std::vector<std::uint32_t> start, ids;
+  };
+  std::vector<Packed> frozen_;
   std::vector<std::size_t> filed_;                               // per level: boxes filed there
   std::vector<CGAL::Bbox_2> boxes_;
 };

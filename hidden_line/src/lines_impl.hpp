@@ -362,6 +362,7 @@ class Classifier {
       for (const auto& h : covers_[i].polygon->holes) hole_boxes_.push_back(box_of(h));
     }
     hole_box_start_.push_back(std::uint32_t(hole_boxes_.size()));
+    grid_.freeze();
     // Orthographic views on the exact kernel decide depths in model space, on the input doubles.
     if constexpr (G::exact_constructions)
       if (!frame.perspective()) {
@@ -381,6 +382,7 @@ class Classifier {
       const auto [m, v0, v1] = sources.edge_on_edges[i];
       edge_on_grid_.insert(i, G::bbox(image(m, v0)) + G::bbox(image(m, v1)));
     }
+    edge_on_grid_.freeze();
   }
 
   const ViewPoint<K>& view_point(std::uint32_t mesh, std::uint32_t v) const { return view_points_[mesh][v]; }

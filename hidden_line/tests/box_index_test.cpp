@@ -53,15 +53,22 @@ RC_GTEST_PROP(LooseGrid, VisitsExactlyTheOverlappingBoxesOnce, ()) {
       removed[i] = 1;
     }
 
+  // Frozen, the same grid visits the same ids in the same order.
+  LooseGrid frozen = grid;
+  frozen.freeze();
+
   for (int q = 0; q < 20; ++q) {
     const CGAL::Bbox_2 query = random_box(origin, unit);
-    std::vector<std::uint32_t> visited, expected;
+    std::vector<std::uint32_t> visited, visited_frozen, expected;
     grid.query(query, [&](std::uint32_t id) { visited.push_back(id); });
+    frozen.query(query, [&](std::uint32_t id) { visited_frozen.push_back(id); });
+    RC_ASSERT(visited_frozen == visited);
     for (std::uint32_t i = 0; i < n; ++i)
       if (!removed[i] && CGAL::do_overlap(boxes[i], query)) expected.push_back(i);
     std::sort(visited.begin(), visited.end());
     RC_ASSERT(visited == expected);
   }
+  RC_ASSERT_THROWS_AS(frozen.insert(0, boxes[0]), std::logic_error);
 }
 
 // A 3D box as the penetration search makes them: mostly small, some flat (faces square to an

@@ -730,7 +730,8 @@ template <class K>
 LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
                           std::vector<Cover<K>> covers, const std::vector<IntersectionSegment>& intersections,
                           const LineOptions& options) {
-  Classifier<K> classifier(meshes, frame, sources, std::move(covers));
+  std::optional<Classifier<K>> classifier;
+  classifier.emplace(meshes, frame, sources, std::move(covers));
   // The lines first, each with the sources it lies in (`own`, sorted); then their pieces, in
   // parallel over chunks of lines: each line is classified on its own, so the result does not
   // depend on the number of threads.
@@ -743,7 +744,7 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
   auto for_each_own_source = [&](Sides sides, auto&& use) {
     for (const auto& [mesh, faces] : sides)
       for (std::uint32_t f : *faces)
-        if (const std::int32_t s = classifier.source_of_face(mesh, f); s >= 0) use(s);
+        if (const std::int32_t s = classifier->source_of_face(mesh, f); s >= 0) use(s);
   };
 
   tbb::enumerable_thread_specific<typename Classifier<K>::Scratch> scratch;
@@ -756,7 +757,6 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
     for (const Mesh& mesh : meshes) line_count += edges.emplace_back(feature_edges(mesh, frame.view(), options.features)).size();
     out.lines.reserve(line_count);
     own_start.reserve(line_count + 1);
-    for (const Mesh& mesh : meshes) out.model_vertices.push_back(mesh.vertices);
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       const NearCut<K>& cut = sources.near_cuts[m];
       for (const FeatureEdge& edge : edges[m]) {
@@ -765,8 +765,8 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         const auto ends = cut.edge_ends(edge.v0, edge.v1);
         if (!ends) continue;
         FeatureLine<K> line;
-        line.a = classifier.view_point(m, (*ends)[0]);
-        line.b = classifier.view_point(m, (*ends)[1]);
+        line.a = classifier->view_point(m, (*ends)[0]);
+        line.b = classifier->view_point(m, (*ends)[1]);
         line.kind = edge.kind;
         line.mesh = m;
         line.v0 = edge.v0;
@@ -862,9 +862,9 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
         const IntersectionSegment* s =
             frame.perspective() || i < first_intersection ? nullptr : &intersections[i - first_intersection];
         const auto query = line.kind == FeatureKind::intersection
-                               ? classifier.constructed(line.a, line.b, {s ? &s->a : nullptr, s ? &s->b : nullptr})
-                               : classifier.mesh_edge(line.mesh, line.v0, line.v1);
-        line.pieces = classifier.classify(query, std::span(own).subspan(own_start[i], own_start[i + 1] - own_start[i]), mine);
+                               ? classifier->constructed(line.a, line.b, {s ? &s->a : nullptr, s ? &s->b : nullptr})
+                               : classifier->mesh_edge(line.mesh, line.v0, line.v1);
+        line.pieces = classifier->classify(query, std::span(own).subspan(own_start[i], own_start[i + 1] - own_start[i]), mine);
       }
     });
   } catch (const Cancelled&) {
@@ -873,6 +873,12 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
     if (options.free_at_exit) (void)new LineSet<K>(std::move(out));
     throw;
   }
+  // What only the classification reads is freed first: the copy would add to the run's peak.
+  classifier.reset();
+  scratch.clear();
+  std::vector<std::int32_t>().swap(own);
+  std::vector<std::uint32_t>().swap(own_start);
+  for (const Mesh& mesh : meshes) out.model_vertices.push_back(mesh.vertices);
   for (const auto& line : out.lines) {
     ++out.stats.by_kind[static_cast<int>(line.kind)];
     if (line.pieces.empty()) ++out.stats.point_in_view;

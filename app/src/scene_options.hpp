@@ -20,7 +20,7 @@ namespace hlr::app {
 // Every subcommand's limits: --timeout, --max-faces (commands that read meshes) and --progress.
 struct RunLimits {
   double timeout = 0;  // seconds of wall clock; 0: none
-  // About 8 GB of memory at the 1.5-1.6 KB per face measured at 1M faces (docs/BENCHMARKS.md): beyond
+  // About 5.5 GB of memory at the 1.1 KB per face measured at 1M faces (docs/BENCHMARKS.md): beyond
   // it a run would fail for memory after a long time on most machines, so it is refused at once.
   std::size_t max_faces = 5'000'000;
   bool progress = false;  // one line per stage on stderr when it is not a terminal

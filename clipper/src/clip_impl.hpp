@@ -193,21 +193,18 @@ void for_each_overlapping_pair(const std::vector<InputEdge>& edges, SweepBuffers
   }
 }
 
-// A raw point's interval box, as the exact kernel keeps it.
+// A raw point's intervals, as the exact kernel keeps them.
 struct IntervalBox {
-  double xinf, xsup, yinf, ysup;
+  CGAL::Interval_nt<false> x, y;
   std::uint32_t point;
 };
 
-// compare_xy on interval boxes: -1 or +1 where they decide, 0 when both are the same point of
-// doubles, 2 when only the exact values can tell.
-inline int compare_xy_intervals(const IntervalBox& a, const IntervalBox& b) {
-  if (a.xsup < b.xinf) return -1;
-  if (a.xinf > b.xsup) return 1;
-  if (a.xinf != a.xsup || b.xinf != b.xsup) return 2;
-  if (a.ysup < b.yinf) return -1;
-  if (a.yinf > b.ysup) return 1;
-  return a.yinf == a.ysup && b.yinf == b.ysup ? 0 : 2;
+// compare_xy on the intervals alone (the kernel's compare_intervals on x, then on y): -1 or +1
+// where they decide, 0 when both are the same point of doubles, 2 when only the exact values can tell.
+template <class G>
+int compare_xy_intervals(const IntervalBox& a, const IntervalBox& b) {
+  const int c = G::compare_intervals(a.x, b.x);
+  return c != 0 ? c : G::compare_intervals(a.y, b.y);
 }
 
 // Puts `items` into `out` in order of key(item) < buckets, stably, by counting; the items of
@@ -416,10 +413,10 @@ void Overlay<K>::build_graph() {
     approx_.resize(raw_.size());
     for (std::uint32_t i = 0; i < raw_.size(); ++i) {
       const auto& a = CGAL::approx(raw_[i]);
-      approx_[i] = {a.x().inf(), a.x().sup(), a.y().inf(), a.y().sup(), i};
+      approx_[i] = {a.x(), a.y(), i};
     }
     auto compare = [&](const IntervalBox& a, const IntervalBox& b) {
-      const int c = compare_xy_intervals(a, b);
+      const int c = compare_xy_intervals<G>(a, b);
       if (c != 2) {
         PredicateStats::add(PredicateFamily::comparison, DecidedBy::interval);
         return c;

@@ -1142,9 +1142,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     for (std::uint32_t k = group_start[g] + 1; k < group_start[g + 1]; ++k)
       if (spans[group_members[k]].line != spans[group_members[group_start[g]]].line) group_alone[g] = 0;
 
-  // One group's spans in order: what each adds to the drawing, with its span index. A span of a
-  // line alone in its group is drawn whole.
-  // A span drawn whole.
+  // A span of a group whose spans all lie on one line: drawn whole.
   auto whole = [&](std::uint32_t s) {
     const Span& span = spans[s];
     const ImageEnds& ends = images[span.line];
@@ -1155,6 +1153,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     return DrawnSegment<K>{end0 == 0 ? ends.a : image->at(span.t0), end1 == 1 ? ends.b : image->at(span.t1), span.visible,
                            line.mesh, line.meeting_degrees, span.line, span.thin, span.t0, span.t1};
   };
+  // One group of several lines' spans, in order: what each adds to the drawing, with its span index.
   auto solve_group = [&](std::span<const std::uint32_t> members,
                          std::vector<std::pair<std::uint32_t, DrawnSegment<K>>>& emitted) {
     std::vector<DrawnSegment<K>> out;

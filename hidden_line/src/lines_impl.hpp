@@ -54,6 +54,18 @@ const typename Geometry<K>::FT& parameter_one() {
   return one;
 }
 
+// A point's coordinates where both are doubles exactly (intervals of one value: input vertices in
+// an axis view), on the exact kernel; else none. Points with the same are the same point.
+template <class K>
+std::optional<std::pair<double, double>> exact_doubles(const typename Geometry<K>::Point& p) {
+  using G = Geometry<K>;
+  if constexpr (!G::exact_constructions) return std::nullopt;
+  const auto [x0, x1] = G::interval(G::x(p));
+  const auto [y0, y1] = G::interval(G::y(p));
+  if (x0 != x1 || y0 != y1) return std::nullopt;
+  return std::pair{x0, y0};
+}
+
 // A line's image a -> b in the view plane, and parameters along it.
 template <class K>
 struct ImageLine {
@@ -82,6 +94,16 @@ struct ImageLine {
   }
   FT param(const P& q) const {
     if (auto t = end_param(q)) return *t;
+    return parameter_along<K>(a, q, along_x ? dx : dy, along_x);
+  }
+  // The same, with an end also known by its value where both are exact_doubles: the ends of
+  // coincident lines, or vertices one behind the other in an axis view, are one point made twice.
+  FT param_by_value(const P& q) const {
+    if (auto t = end_param(q)) return *t;
+    if (const auto key = exact_doubles<K>(q)) {
+      if (key == exact_doubles<K>(a)) return parameter_zero<K>();
+      if (key == exact_doubles<K>(b)) return parameter_one<K>();
+    }
     return parameter_along<K>(a, q, along_x ? dx : dy, along_x);
   }
   // The parameter where the line meets the line through c and d (not parallel to it).
@@ -439,6 +461,15 @@ class Classifier {
     clip::LineId own = kNoLine;
     std::unordered_map<clip::LineId, FT> by_line;
     std::unordered_map<std::uintptr_t, FT> by_point;  // by G::identity of corners on the line
+    // By exact_doubles of points on the line: in an axis view the images of vertices one behind
+    // the other are one point, met through edge-on faces' edges all along a line, and equal
+    // parameters made apart would be compared exactly when the split points are sorted.
+    struct DoublesHash {
+      std::size_t operator()(const std::pair<double, double>& p) const noexcept {
+        return std::hash<double>()(p.first) * 31 + std::hash<double>()(p.second);
+      }
+    };
+    std::unordered_map<std::pair<double, double>, FT, DoublesHash> by_value;
 
     bool on_line(const clip::Contour<K>& c, std::size_t i) const {
       if constexpr (G::exact_constructions) return own != kNoLine && clip::corner_on_line(c, i, own);
@@ -472,10 +503,18 @@ class Classifier {
       if (auto t = line->end_param(p)) return *t;
       if (G::identity(p) != 0) {
         auto [it, added] = by_point.try_emplace(G::identity(p));
-        if (added) it->second = line->param(p);
+        if (added) it->second = of_value(p);
         return it->second;
       }
-      return line->param(p);
+      return of_value(p);
+    }
+    // A point's parameter, made once for all points of the same exact_doubles.
+    FT of_value(const P& p) {
+      const auto key = exact_doubles<K>(p);
+      if (!key) return line->param(p);
+      auto [it, added] = by_value.try_emplace(*key);
+      if (added) it->second = line->param_by_value(p);
+      return it->second;
     }
     FT crossing_of(clip::LineId id) {
       auto [it, added] = by_line.try_emplace(id);
@@ -511,6 +550,7 @@ class Classifier {
     params.own = q.line;
     reset(params.by_line);
     reset(params.by_point);
+    reset(params.by_value);
     reset(scratch.by_source);
     scratch.edge_on.clear();
     // A mesh vertex lies exactly in the plane of every source through it.
@@ -1175,7 +1215,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
         // in floating point): each pair is asked again.
         if constexpr (!G::exact_constructions)
           if (!collinear_lines(span.line, drawn_line[i])) return;
-        FT lo = image.param(out[i].a), hi = image.param(out[i].b);
+        FT lo = image.param_by_value(out[i].a), hi = image.param_by_value(out[i].b);
         if (hi < lo) std::swap(lo, hi);
         lo = std::max(lo, span.t0);
         hi = std::min(hi, span.t1);

@@ -35,8 +35,8 @@ int area_sign(const Contour<K>& contour) {
       return sum.inf() > 0 ? 1 : -1;
     }
     // Corners whose coordinates are doubles (input vertices in the axis views, where faces seen
-    // edge-on have area 0): the sum is exact on them in expansion arithmetic, without the lazy
-    // nodes and rationals of twice_signed_area.
+    // edge-on have area 0): products and sums of doubles are exact in CGAL::Mpzf, without the
+    // lazy nodes and rationals of twice_signed_area.
     if (std::all_of(pts.begin(), pts.end(), [](const auto& p) { return G::is_double(CGAL::approx(p)); })) {
       PredicateStats::add(PredicateFamily::sign, DecidedBy::doubles);
       auto value = [](const typename G::FT& v) { return CGAL::Mpzf(G::interval(v).first); };

@@ -359,7 +359,7 @@ i = (np.arange(n)[None, :] + (n + 1) * np.arange(n)[:, None]).ravel()
 faces = np.concatenate([np.column_stack([i, i + 1, i + n + 2]), np.column_stack([i, i + n + 2, i + n + 1])])
 mesh = hlrdraw.mesh(vertices, faces)
 def stage(what):
-    print("stage", what, flush=True)
+    print("stage", time.monotonic(), what, flush=True)
 try:
     hlrdraw.draw(mesh, view="iso", sun=(1, 2, -3), progress=stage)
     print("finished", flush=True)
@@ -382,4 +382,7 @@ def test_ctrl_c_stops_a_job_within_its_stage():
     child.send_signal(signal.SIGINT)
     rest = child.communicate(timeout=60)[0].splitlines()
     assert rest and rest[-1].startswith("KeyboardInterrupt"), rest
-    assert float(rest[-1].split()[1]) - sent < 2.0, "the job did not stop within its stage"
+    # Within its stage: no later stage began after the signal (at most one, begun as it was sent).
+    # Decided on the order of events, not on a time, which a loaded machine would stretch.
+    later = [line for line in rest if line.startswith("stage") and float(line.split()[1]) > sent]
+    assert len(later) <= 1, f"the job went on into later stages: {later}"

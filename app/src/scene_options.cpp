@@ -31,12 +31,12 @@ void add_scene_options(CLI::App& cmd, SceneOptions& options, bool kernel) {
                   ->expected(3)
                   ->type_name("X,Y,Z");
   eye->excludes(view);
-  auto* target = cmd.add_option("--target", options.target, "the point a perspective view (--eye) looks at")
-                     ->delimiter(',')
-                     ->expected(3)
-                     ->needs(eye)
-                     ->excludes(dir)
-                     ->type_name("X,Y,Z");
+  cmd.add_option("--target", options.target, "the point a perspective view (--eye) looks at")
+      ->delimiter(',')
+      ->expected(3)
+      ->needs(eye)
+      ->excludes(dir)
+      ->type_name("X,Y,Z");
   cmd.add_option("--up", options.up, "up vector for --dir or --target (default +Z, or +Y when looking along Z)")
       ->delimiter(',')
       ->expected(3)

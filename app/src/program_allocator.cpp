@@ -12,6 +12,12 @@ void keep_freed_pages() {
 #endif
 }
 
+void release_free_pages() {
+#ifdef HLR_TCMALLOC
+  MallocExtension::instance()->ReleaseFreeMemory();
+#endif
+}
+
 void return_freed_pages() {
 #ifdef HLR_TCMALLOC
   MallocExtension::instance()->ReleaseFreeMemory();

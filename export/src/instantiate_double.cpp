@@ -19,7 +19,7 @@ LineDrawing make_raster_drawing(const InputInfo& input, const hidden_line::Raste
       segments.push_back(
           {at(piece.t0), at(piece.t1), piece.visible, line.mesh, line.meeting_degrees, 0, smooth, piece.t0, piece.t1});
     }
-  LineDrawing drawing = make_drawing<DoubleKernel>(input, raster.frame(), KernelKind::floating, lines, segments);
+  LineDrawing drawing = make_drawing<DoubleKernel>(input, raster.frame(), KernelKind::floating, lines, std::move(segments));
   const hidden_line::RasterGrid& grid = raster.grid();
   drawing.raster = RasterInfo{resolution, grid.width, grid.height, grid.pixel};
   return drawing;

@@ -92,6 +92,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   const bool sorted = !options.shadow_lights.empty();
   hidden_line::SourceOptions sources;
   sources.stop = progress.stop;
+  sources.line_origins = sorted;
   if constexpr (std::is_same_v<K, ExactKernel>) {
     sources.culled = options.culled_faces;
     sources.depth_planes = sorted || frame.perspective();  // else decided in model space
@@ -105,7 +106,10 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
     solution->map = hidden_line::area_sort<K>(solution->sources, {.keep_hidden = false, .stop = progress.stop});
     times.sort = seconds_since(mark);
   }
-  if (beside) beside->wait();
+  if (beside) {
+    beside->wait();
+    if (options.lines_stage_begins) options.lines_stage_begins();
+  }
   times.intersections = intersections.seconds();
   check();
   progress.report("classifying feature lines");
@@ -159,7 +163,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   // freed (or left to the process's exit: see DrawOptions::free_at_exit).
   mark = std::chrono::steady_clock::now();
   LineDrawing drawing =
-      make_drawing<K>(scene.input, frame, kernel_kind_of<K>(), solution->lines, solution->segments, progress.stop);
+      make_drawing<K>(scene.input, frame, kernel_kind_of<K>(), solution->lines, std::move(solution->segments), progress.stop);
   if (!options.free_at_exit || options.free_once_drawn) solution.reset();
   attach_source_curves(drawing, scene.meshes);
   times.write = seconds_since(mark);

@@ -23,7 +23,7 @@ namespace hlr::exporter {
 template <class K>
 LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, KernelKind kernel,
                          const hidden_line::LineSet<K>& lines,
-                         const std::vector<hidden_line::DrawnSegment<K>>& segments, StopToken stop) {
+                         std::vector<hidden_line::DrawnSegment<K>> segments, StopToken stop) {
   using G = Geometry<K>;
   using FT = typename G::FT;
   LineDrawing d;
@@ -75,6 +75,32 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
     return written;
   };
 
+  // The ends first: the segments are rounded by way of them, and then freed before the pieces are
+  // made, which lowers the run's peak.
+  hidden_line::parallel_chunks(lines.lines.size(), 256, [&](const auto& range) {
+    stop.check();
+    for (std::size_t index = range.begin(); index != range.end(); ++index)
+      if (!lines.lines[index].pieces.empty()) round_ends(index);
+  });
+  d.segments.resize(segments.size());
+  hidden_line::parallel_chunks(segments.size(), 256, [&](const auto& range) {
+    stop.check();
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const auto& s = segments[i];
+      Point2 a, b;
+      if constexpr (G::exact_constructions) {
+        // The same exact points by way of their line (one with pieces), whose ends are rounded.
+        const Point3 pa = at(s.line, s.t0, 2), pb = at(s.line, s.t1, 2);
+        a = {pa[0], pa[1]};
+        b = {pb[0], pb[1]};
+      } else {
+        a = {frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)};
+        b = {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)};
+      }
+      d.segments[i] = {a, b, s.visible, s.mesh, s.meeting_degrees, s.line, -1, s.thin};
+    }
+  });
+  std::vector<hidden_line::DrawnSegment<K>>().swap(segments);
   // Line i's pieces go to d.pieces[first[i], first[i + 1]).
   std::vector<std::size_t> first(lines.lines.size() + 1, 0);
   for (std::size_t i = 0; i < lines.lines.size(); ++i) first[i + 1] = first[i] + lines.lines[i].pieces.size();
@@ -84,7 +110,6 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
     for (std::size_t index = range.begin(); index != range.end(); ++index) {
       const auto& line = lines.lines[index];
       if (line.pieces.empty()) continue;
-      round_ends(index);
       DrawingPiece* out = &d.pieces[first[index]];
       for (std::size_t k = 0; k < line.pieces.size(); ++k) {
         const auto& piece = line.pieces[k];
@@ -109,24 +134,6 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
     }
   });
 
-  d.segments.resize(segments.size());
-  hidden_line::parallel_chunks(segments.size(), 256, [&](const auto& range) {
-    stop.check();
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const auto& s = segments[i];
-      Point2 a, b;
-      if constexpr (G::exact_constructions) {
-        // The same exact points by way of their line (one with pieces), whose ends are rounded.
-        const Point3 pa = at(s.line, s.t0, 2), pb = at(s.line, s.t1, 2);
-        a = {pa[0], pa[1]};
-        b = {pb[0], pb[1]};
-      } else {
-        a = {frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)};
-        b = {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)};
-      }
-      d.segments[i] = {a, b, s.visible, s.mesh, s.meeting_degrees, s.line, -1, s.thin};
-    }
-  });
   return d;
 }
 

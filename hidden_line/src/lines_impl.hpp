@@ -973,7 +973,6 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   };
   const std::size_t n = lines.lines.size();
   std::vector<ImageEnds> images(n);
-  std::vector<Span> spans;
   // One image point per mesh vertex: collinear lines that meet at a vertex then meet at one point
   // (G::identity), and the spans' overlaps there need no exact comparison (ImageLine::param).
   // The sources' points (`vertex_images`), or without them made here, once per vertex.
@@ -996,27 +995,38 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       if (l.has_model_ends) {
         const auto& points = (*vertex_images)[l.mesh];
         images[i] = {points[l.v0], points[l.v1]};
-      } else {
+      } else if constexpr (!G::exact_constructions) {
         images[i] = {G::point(l.a.x, l.a.y), G::point(l.b.x, l.b.y)};
       }
     }
   });
-  // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
-  // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
-  auto for_each_span = [&](auto&& add) {
-    for (int pass = 0; pass < 3; ++pass)
-      for (std::uint32_t i = 0; i < lines.lines.size(); ++i) {
-        const bool smooth = lines.lines[i].kind == FeatureKind::smooth;
-        if (smooth != (pass == 2) || (smooth && pass == 1)) continue;
-        for (const auto& p : lines.lines[i].pieces)
-          if (p.visible == (pass != 1)) add(i, p, smooth);
+  // The other lines' ends: on the exact kernel, one image point per view point (an intersection
+  // line's ends are shared along its curve, classify_lines), which halves them in a large drawing.
+  if constexpr (G::exact_constructions) {
+    std::vector<std::pair<std::array<std::uintptr_t, 2>, std::uint32_t>> shared_ends;  // ((x, y) reps, 2 line + end)
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const FeatureLine<K>& l = lines.lines[i];
+      if (l.has_model_ends) continue;
+      shared_ends.push_back({{std::uintptr_t(l.a.x.id()), std::uintptr_t(l.a.y.id())}, 2 * i});
+      shared_ends.push_back({{std::uintptr_t(l.b.x.id()), std::uintptr_t(l.b.y.id())}, 2 * i + 1});
+    }
+    tbb::parallel_sort(shared_ends.begin(), shared_ends.end());
+    std::vector<std::uint32_t> firsts;  // where each run of one view point starts
+    for (std::uint32_t k = 0; k < shared_ends.size(); ++k)
+      if (k == 0 || shared_ends[k].first != shared_ends[k - 1].first) firsts.push_back(k);
+    firsts.push_back(std::uint32_t(shared_ends.size()));
+    parallel_chunks(firsts.size() - 1, 4096, [&](const auto& range) {
+      for (std::size_t r = range.begin(); r != range.end(); ++r) {
+        const std::uint32_t first = shared_ends[firsts[r]].second;
+        const ViewPoint<K>& v = first % 2 == 0 ? lines.lines[first / 2].a : lines.lines[first / 2].b;
+        const typename G::Point point = G::point(v.x, v.y);
+        for (std::uint32_t k = firsts[r]; k != firsts[r + 1]; ++k) {
+          const std::uint32_t end = shared_ends[k].second;
+          (end % 2 == 0 ? images[end / 2].a : images[end / 2].b) = point;
+        }
       }
-  };
-  std::size_t span_count = 0;
-  for_each_span([&](std::uint32_t, const LinePiece<K>&, bool) { ++span_count; });
-  spans.reserve(span_count);
-  for_each_span([&](std::uint32_t i, const LinePiece<K>& p, bool smooth) { spans.push_back({i, p.t0, p.t1, p.visible, smooth}); });
-
+    });
+  }
   // Whether two lines' images are collinear, decided on their own ends: on the input coordinates
   // where both are mesh edges (exact zeros there are common, and cheap), else on the images.
   auto collinear_lines = [&](std::uint32_t i, std::uint32_t j) {
@@ -1052,7 +1062,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // other way). The position matters where thousands of lines share one image line, as the hole
   // rims of a plate seen edge-on do: angle and offset alone would pair each with all the others.
   // Lines whose direction is too uncertain go by their boxes.
-  using Key = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+  using Key = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t, CGAL::Box_intersection_d::ID_NONE>;
   std::vector<Key> keys(n);
   std::vector<char> is_uncertain(n, 0);
   constexpr double kHalfTurn = std::numbers::pi;
@@ -1157,6 +1167,28 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   UnionFind groups(n);
   for (const Joined& mine : joined)
     for (const auto& [i, j] : mine.pairs) groups.join(i, j);
+  // What only the joining needed is freed before the spans are listed.
+  joined.clear();
+  std::vector<Direction>().swap(directions);
+  std::vector<char>().swap(is_uncertain);
+
+  // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
+  // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
+  auto for_each_span = [&](auto&& add) {
+    for (int pass = 0; pass < 3; ++pass)
+      for (std::uint32_t i = 0; i < lines.lines.size(); ++i) {
+        const bool smooth = lines.lines[i].kind == FeatureKind::smooth;
+        if (smooth != (pass == 2) || (smooth && pass == 1)) continue;
+        for (const auto& p : lines.lines[i].pieces)
+          if (p.visible == (pass != 1)) add(i, p, smooth);
+      }
+  };
+  std::vector<Span> spans;
+  std::size_t span_count = 0;
+  for_each_span([&](std::uint32_t, const LinePiece<K>&, bool) { ++span_count; });
+  spans.reserve(span_count);
+  for_each_span([&](std::uint32_t i, const LinePiece<K>& p, bool smooth) { spans.push_back({i, p.t0, p.t1, p.visible, smooth}); });
+
   // The spans of each group, in span order (group_members from group_start[g]): a counting sort.
   std::vector<std::uint32_t> span_group(spans.size());
   std::uint32_t group_count = 0;

@@ -77,6 +77,9 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     // One support line per mesh edge.
     std::vector<clip::LineId> edge_line(topo.uses.size());
     auto& edge_lines = out.edge_lines.emplace_back();
+    std::size_t edge_count = 0;  // grown by doubling, edge_lines would keep up to half of it unused
+    for (std::size_t i = 0; i < topo.uses.size(); ++i) edge_count += i == 0 || topo.uses[i].key != topo.uses[i - 1].key;
+    edge_lines.reserve(edge_count);
     for (std::size_t i = 0; i < topo.uses.size(); ++i) {
       if (i > 0 && topo.uses[i].key == topo.uses[i - 1].key) {
         edge_line[i] = edge_line[i - 1];
@@ -89,12 +92,14 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       // behind is no face's edge in the view, and gets a line of one point.
       const auto ends = cut.edge_ends(v0, v1);
       out.lines.push_back(ends ? clip::SupportLine<K>{p2[(*ends)[0]], p2[(*ends)[1]]} : clip::SupportLine<K>{p2[v0], p2[v0]});
-      LineOrigin origin;
-      origin.kind = LineOrigin::mesh_edge;
-      origin.mesh = static_cast<std::int32_t>(mi);
-      origin.v0 = v0;
-      origin.v1 = v1;
-      out.line_origins.push_back(origin);
+      if (options.line_origins) {
+        LineOrigin origin;
+        origin.kind = LineOrigin::mesh_edge;
+        origin.mesh = static_cast<std::int32_t>(mi);
+        origin.v0 = v0;
+        origin.v1 = v1;
+        out.line_origins.push_back(origin);
+      }
     }
     auto line_of = [&](std::uint32_t a, std::uint32_t b) {
       const std::uint64_t key = edge_key(a, b);
@@ -202,7 +207,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       if (id == ~clip::LineId(0)) {
         id = static_cast<clip::LineId>(out.lines.size());
         out.lines.push_back({a, b});
-        out.line_origins.push_back(LineOrigin{});
+        if (options.line_origins) out.line_origins.push_back(LineOrigin{});
       }
       return id;
     };

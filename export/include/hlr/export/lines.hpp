@@ -1,7 +1,8 @@
 // hlr export, lines: a hidden-line drawing as a document.
 //
-//   make_drawing  rounds a LineSet (and its drawing segments) to the orthonormal view frame in
-//                 model units: the one place where the exact result is rounded.
+//   make_drawing  rounds a LineSet (and its drawing segments, which it takes and frees once
+//                 rounded) to the orthonormal view frame in model units: the one place where the
+//                 exact result is rounded.
 //   lines_json    the hlr-lines/1 contract (DESIGN.md, docs/FORMATS.md): every piece, visible and
 //                 hidden, with its kind and mesh edge (write_lines_json: the same, written out as
 //                 it is made).
@@ -139,8 +140,8 @@ struct LineDrawing {
 
 template <class K>
 LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, KernelKind kernel,
-                         const hidden_line::LineSet<K>& lines,
-                         const std::vector<hidden_line::DrawnSegment<K>>& segments, StopToken stop = {});
+                         const hidden_line::LineSet<K>& lines, std::vector<hidden_line::DrawnSegment<K>> segments,
+                         StopToken stop = {});
 
 // The raster path's drawing: every piece is drawn as it is (no precedence step; the raster
 // classification decides one class per pixel step).
@@ -301,7 +302,7 @@ std::string lines_dxf(const LineDrawing& drawing, const DrawingStyle& style);
 #define HLR_EXPORT_LINES_DECLARE(K, EXTERN)                                                              \
   EXTERN template LineDrawing make_drawing<K>(const InputInfo&, const ViewFrame<K>&, KernelKind,         \
                                               const hidden_line::LineSet<K>&,                            \
-                                              const std::vector<hidden_line::DrawnSegment<K>>&, StopToken);
+                                              std::vector<hidden_line::DrawnSegment<K>>, StopToken);
 
 HLR_EXPORT_LINES_DECLARE(ExactKernel, extern)
 HLR_EXPORT_LINES_DECLARE(EpickKernel, extern)

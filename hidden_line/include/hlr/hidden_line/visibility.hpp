@@ -73,7 +73,7 @@ template <class K>
 struct Sources {
   std::vector<SourcePolygon<K>> polygons;
   clip::LineTable<K> lines;
-  std::vector<LineOrigin> line_origins;  // parallel to lines
+  std::vector<LineOrigin> line_origins;  // parallel to lines; empty without SourceOptions::line_origins
   // (mesh, v0, v1) of the edges of the faces dropped edge-on that can cover a line: each edge
   // once, and with `consolidate` not the edges between two of a region's coplanar triangles (the
   // region covers what its boundary covers). v0, v1 index view_points: in a perspective view an
@@ -102,6 +102,9 @@ struct SourceOptions {
   // orthographic view on the exact kernel decides depths in model space instead (ModelPlane in
   // kernel/view_predicates.hpp) and is spared building them.
   bool depth_planes = true;
+  // What each support line is (Sources::line_origins): the area sort and the shadows need it, a
+  // line drawing does not (1.5M lines, 36 MB, at 1M faces).
+  bool line_origins = true;
   StopToken stop;  // polled as the faces are projected
 };
 

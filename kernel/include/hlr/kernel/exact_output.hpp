@@ -85,6 +85,17 @@ inline ExactKernel::Point_3 lazy_point(const ModelPointRecipe& recipe,
   return ExactKernel::Point_3(ExactKernel::Point_3::Rep(new exact_output_detail::RecipePointRep(recipe, approx)));
 }
 
+// A lazy_point made again: the same recipe and intervals in a rep of its own (any other point is
+// returned as it is). For moving the points a computation keeps away from those it dropped.
+inline ExactKernel::Point_3 remade(const ExactKernel::Point_3& p) {
+  // CGAL's Lazy keeps its rep pointer private; Handle hands it out untyped (for Compact_container).
+  const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(p).for_compact_container());
+  const auto* made = dynamic_cast<const exact_output_detail::RecipePointRep*>(rep);
+  if (!made) return p;
+  const auto& a = p.approx();
+  return lazy_point(made->recipe(), {a[0], a[1], a[2]});
+}
+
 // How `p` was built, read back from the point itself, so that nothing else need keep it: a
 // lazy_point's recipe; an input point where every interval is a single double (an interval holds
 // the exact value, so that double is the coordinate); else unknown.

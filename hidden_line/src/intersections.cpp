@@ -521,17 +521,10 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     ends[2 * i] = {out[i].a.id(), std::uint32_t(2 * i)};
     ends[2 * i + 1] = {out[i].b.id(), std::uint32_t(2 * i + 1)};
   }
-  tbb::parallel_sort(ends.begin(), ends.end());
-  std::vector<std::size_t> firsts;  // where each run of one point starts in `ends`
-  for (std::size_t k = 0; k < ends.size(); ++k)
-    if (k == 0 || ends[k].first != ends[k - 1].first) firsts.push_back(k);
-  firsts.push_back(ends.size());
   auto end_point = [&](std::uint32_t end) -> EK::Point_3& { return end % 2 == 0 ? out[end / 2].a : out[end / 2].b; };
-  parallel_chunks(firsts.size() - 1, 4096, [&](const auto& range) {
-    for (std::size_t r = range.begin(); r != range.end(); ++r) {
-      const EK::Point_3 point = remade(end_point(ends[firsts[r]].second));
-      for (std::size_t k = firsts[r]; k != firsts[r + 1]; ++k) end_point(ends[k].second) = point;
-    }
+  detail::for_each_run_of_one_key(ends, 4096, stop, [&](auto run) {
+    const EK::Point_3 point = remade(end_point(run.front().second));
+    for (const auto& [id, end] : run) end_point(end) = point;
   });
   return out;
 }

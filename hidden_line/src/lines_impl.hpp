@@ -734,6 +734,24 @@ class Classifier {
   LooseGrid grid_, edge_on_grid_;
 };
 
+// Sorts (key, item) pairs and calls run(items) once for each run of one key, with the items of
+// the run, in parallel chunks of `grain` runs: how the ends that are one point are found, to be
+// made, viewed or rounded once.
+template <class Key, class Run>
+void for_each_run_of_one_key(std::vector<std::pair<Key, std::uint32_t>>& keyed, std::size_t grain, const StopToken& stop,
+                             const Run& run) {
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  std::vector<std::size_t> firsts;  // where each run starts in `keyed`
+  for (std::size_t k = 0; k < keyed.size(); ++k)
+    if (k == 0 || keyed[k].first != keyed[k - 1].first) firsts.push_back(k);
+  firsts.push_back(keyed.size());
+  parallel_chunks(firsts.size() - 1, grain, [&](const auto& range) {
+    stop.check();
+    for (std::size_t r = range.begin(); r != range.end(); ++r)
+      run(std::span(keyed.data() + firsts[r], keyed.data() + firsts[r + 1]));
+  });
+}
+
 // The segments' ends in an orthographic view: end(2 i + e, point, rounded) for end e of segment i,
 // from every thread, with its view point and on the exact kernel the nearest doubles to it (from
 // its recipe). Ends that are one lazy point (the same id) share one view point, rounded once.
@@ -747,22 +765,14 @@ void for_each_view_end(const ViewFrame<K>& frame, const std::vector<Intersection
       ends[2 * i + 1] = {segments[i].b.id(), std::uint32_t(2 * i + 1)};
     }
   });
-  tbb::parallel_sort(ends.begin(), ends.end());
-  std::vector<std::size_t> firsts;  // where each run of one id starts in `ends`
-  for (std::size_t k = 0; k < ends.size(); ++k)
-    if (k == 0 || ends[k].first != ends[k - 1].first) firsts.push_back(k);
-  firsts.push_back(ends.size());
   const RecipeRounding rounding(frame.view());
-  parallel_chunks(firsts.size() - 1, 1024, [&](const auto& range) {
-    stop.check();
-    for (std::size_t r = range.begin(); r != range.end(); ++r) {
-      const std::uint32_t first = ends[firsts[r]].second;
-      const IntersectionSegment& s = segments[first / 2];
-      const ViewPoint<K> point = frame.to_view(first % 2 == 0 ? s.a : s.b);
-      std::optional<std::array<double, 3>> rounded;
-      if constexpr (Geometry<K>::exact_constructions) rounded = rounding.nearest(recipe_of(first % 2 == 0 ? s.a : s.b));
-      for (std::size_t k = firsts[r]; k != firsts[r + 1]; ++k) end(ends[k].second, point, rounded);
-    }
+  for_each_run_of_one_key(ends, 1024, stop, [&](auto run) {
+    const std::uint32_t first = run.front().second;
+    const IntersectionSegment& s = segments[first / 2];
+    const ViewPoint<K> point = frame.to_view(first % 2 == 0 ? s.a : s.b);
+    std::optional<std::array<double, 3>> rounded;
+    if constexpr (Geometry<K>::exact_constructions) rounded = rounding.nearest(recipe_of(first % 2 == 0 ? s.a : s.b));
+    for (const auto& [id, e] : run) end(e, point, rounded);
   });
 }
 
@@ -1010,21 +1020,11 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       shared_ends.push_back({{std::uintptr_t(l.a.x.id()), std::uintptr_t(l.a.y.id())}, 2 * i});
       shared_ends.push_back({{std::uintptr_t(l.b.x.id()), std::uintptr_t(l.b.y.id())}, 2 * i + 1});
     }
-    tbb::parallel_sort(shared_ends.begin(), shared_ends.end());
-    std::vector<std::uint32_t> firsts;  // where each run of one view point starts
-    for (std::uint32_t k = 0; k < shared_ends.size(); ++k)
-      if (k == 0 || shared_ends[k].first != shared_ends[k - 1].first) firsts.push_back(k);
-    firsts.push_back(std::uint32_t(shared_ends.size()));
-    parallel_chunks(firsts.size() - 1, 4096, [&](const auto& range) {
-      for (std::size_t r = range.begin(); r != range.end(); ++r) {
-        const std::uint32_t first = shared_ends[firsts[r]].second;
-        const ViewPoint<K>& v = first % 2 == 0 ? lines.lines[first / 2].a : lines.lines[first / 2].b;
-        const typename G::Point point = G::point(v.x, v.y);
-        for (std::uint32_t k = firsts[r]; k != firsts[r + 1]; ++k) {
-          const std::uint32_t end = shared_ends[k].second;
-          (end % 2 == 0 ? images[end / 2].a : images[end / 2].b) = point;
-        }
-      }
+    detail::for_each_run_of_one_key(shared_ends, 4096, stop, [&](auto run) {
+      const std::uint32_t first = run.front().second;
+      const ViewPoint<K>& v = first % 2 == 0 ? lines.lines[first / 2].a : lines.lines[first / 2].b;
+      const typename G::Point point = G::point(v.x, v.y);
+      for (const auto& [xy, end] : run) (end % 2 == 0 ? images[end / 2].a : images[end / 2].b) = point;
     });
   }
   // Whether two lines' images are collinear, decided on their own ends: on the input coordinates

@@ -537,7 +537,8 @@ TEST(ExactOutput, RecipesRoundAsTheViewFrame) {
 
 // lazy_point is the crossing of the edge u w with the plane through a, b, c that Epeck constructs:
 // equal to it exactly (comparisons that only the exact coordinates settle), on random, grid-snapped
-// and mixed-magnitude input (1e-9 next to 1e9), and its predicates are that point's.
+// and mixed-magnitude input (1e-9 next to 1e9), and its predicates are that point's; remade gives
+// the same point in a new rep.
 TEST(ExactOutput, LazyPointIsTheEpeckCrossing) {
   using K = ExactKernel;
   std::mt19937_64 random(5);
@@ -566,13 +567,17 @@ TEST(ExactOutput, LazyPointIsTheEpeckCrossing) {
     ASSERT_TRUE(plane.has_on(got)) << i;
     const K::Point_3 q = p3(point()), s = p3(point());
     ASSERT_EQ(CGAL::orientation(p3(r.u), q, s, got), CGAL::orientation(p3(r.u), q, s, expected)) << i;
+    // Made again (after got's exact coordinates were made above): a rep of its own, the same point.
+    const K::Point_3 again = remade(got);
+    ASSERT_NE(again.id(), got.id()) << i;
+    ASSERT_EQ(CGAL::compare_xyz(again, expected), CGAL::EQUAL) << i;
     ++checked;
   }
   EXPECT_GT(checked, 1000);
 }
 
-// The recipe read back from a point: a lazy point's own, an input point's doubles, and nothing for
-// a point CGAL constructed, which output rounds the general way.
+// The recipe read back from a point: a lazy point's own (also once remade), an input point's
+// doubles, and nothing for a point CGAL constructed, which output rounds the general way.
 TEST(ExactOutput, RecipeOfReadsBackHowThePointWasMade) {
   using K = ExactKernel;
   const ModelPointRecipe r{ModelPointRecipe::Kind::edge_crossing, {0, 0, -1}, {0, 0, 2}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
@@ -580,7 +585,12 @@ TEST(ExactOutput, RecipeOfReadsBackHowThePointWasMade) {
   EXPECT_EQ(made.kind, r.kind);
   for (const auto& [x, y] : {std::pair{made.u, r.u}, {made.w, r.w}, {made.a, r.a}, {made.b, r.b}, {made.c, r.c}})
     EXPECT_EQ(x, y);
-  const ModelPointRecipe input = recipe_of(K::Point_3(0.1, -2.5, 1e300));
+  const ModelPointRecipe again = recipe_of(remade(lazy_point(r, {CGAL::Interval_nt<false>(0), 0, 0})));
+  EXPECT_EQ(again.kind, r.kind);
+  EXPECT_EQ(again.w, r.w);
+  const K::Point_3 plain(0.1, -2.5, 1e300);
+  EXPECT_EQ(remade(plain).id(), plain.id()) << "a point without a recipe is returned as it is";
+  const ModelPointRecipe input = recipe_of(plain);
   EXPECT_EQ(input.kind, ModelPointRecipe::Kind::input_point);
   EXPECT_EQ(input.u, (Vec3{0.1, -2.5, 1e300}));
   EXPECT_EQ(recipe_of(CGAL::midpoint(K::Point_3(0, 0, 0), K::Point_3(0.1, 0, 0))).kind, ModelPointRecipe::Kind::input_point)

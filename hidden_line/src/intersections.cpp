@@ -516,11 +516,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   std::vector<std::pair<std::size_t, std::size_t>>().swap(pairs);
   std::vector<std::pair<GroupPair, const Piece*>>().swap(by_group);
   std::vector<std::vector<IntersectionSegment>>().swap(joined);
-  std::vector<std::pair<std::size_t, std::uint32_t>> ends(2 * out.size());  // (point id, end)
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    ends[2 * i] = {out[i].a.id(), std::uint32_t(2 * i)};
-    ends[2 * i + 1] = {out[i].b.id(), std::uint32_t(2 * i + 1)};
-  }
+  auto ends = detail::ends_by_point(out);
   auto end_point = [&](std::uint32_t end) -> EK::Point_3& { return end % 2 == 0 ? out[end / 2].a : out[end / 2].b; };
   detail::for_each_run_of_one_key(ends, 4096, stop, [&](auto run) {
     const EK::Point_3 point = remade(end_point(run.front().second));

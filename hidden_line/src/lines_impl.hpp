@@ -752,19 +752,26 @@ void for_each_run_of_one_key(std::vector<std::pair<Key, std::uint32_t>>& keyed, 
   });
 }
 
-// The segments' ends in an orthographic view: end(2 i + e, point, rounded) for end e of segment i,
-// from every thread, with its view point and on the exact kernel the nearest doubles to it (from
-// its recipe). Ends that are one lazy point (the same id) share one view point, rounded once.
-template <class K, class End>
-void for_each_view_end(const ViewFrame<K>& frame, const std::vector<IntersectionSegment>& segments,
-                       const StopToken& stop, const End& end) {
-  std::vector<std::pair<std::size_t, std::uint32_t>> ends(2 * segments.size());  // (point id, end)
+// (point id, 2 i + e) for end e of segment i: the segments' ends keyed by their lazy point, for
+// for_each_run_of_one_key.
+inline std::vector<std::pair<std::size_t, std::uint32_t>> ends_by_point(const std::vector<IntersectionSegment>& segments) {
+  std::vector<std::pair<std::size_t, std::uint32_t>> ends(2 * segments.size());
   parallel_chunks(segments.size(), 4096, [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       ends[2 * i] = {segments[i].a.id(), std::uint32_t(2 * i)};
       ends[2 * i + 1] = {segments[i].b.id(), std::uint32_t(2 * i + 1)};
     }
   });
+  return ends;
+}
+
+// The segments' ends in an orthographic view: end(2 i + e, point, rounded) for end e of segment i,
+// from every thread, with its view point and on the exact kernel the nearest doubles to it (from
+// its recipe). Ends that are one lazy point (the same id) share one view point, rounded once.
+template <class K, class End>
+void for_each_view_end(const ViewFrame<K>& frame, const std::vector<IntersectionSegment>& segments,
+                       const StopToken& stop, const End& end) {
+  auto ends = ends_by_point(segments);
   const RecipeRounding rounding(frame.view());
   for_each_run_of_one_key(ends, 1024, stop, [&](auto run) {
     const std::uint32_t first = run.front().second;

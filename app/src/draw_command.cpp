@@ -82,6 +82,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   if (scene.input.faces >= kFacesToReturnPages) {
     job.lines_stage_begins = release_free_pages;
     job.output_stage_begins = return_freed_pages;
+    job.drawing_rounded = keep_freed_pages;
     job.free_once_drawn = true;
   }
   exporter::RasterRun raster;

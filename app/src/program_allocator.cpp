@@ -9,6 +9,7 @@ namespace hlr::app {
 void keep_freed_pages() {
 #ifdef HLR_TCMALLOC
   MallocExtension::instance()->SetMemoryReleaseRate(0);
+  MallocExtension::instance()->SetNumericProperty("tcmalloc.aggressive_memory_decommit", 0);
 #endif
 }
 

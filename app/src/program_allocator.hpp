@@ -4,9 +4,10 @@
 
 namespace hlr::app {
 
-// For the run: freed pages are kept for the next stage to reuse. Pages handed back sooner are
-// faulted in and zeroed again by the next stage that grows (0.7 s of a 1M-face draw's output
-// stage, docs/BENCHMARKS.md).
+// From here (the run's start, or after return_freed_pages): freed pages are kept for the next stage
+// to reuse. Pages handed back sooner are faulted in and zeroed again by the next stage that grows
+// (0.7 s of a 1M-face draw's output stage, docs/BENCHMARKS.md; a fault costs about 14 us on the
+// benchmark machine, and handing back a small span one madvise call as long).
 void keep_freed_pages();
 
 // The pages free now are handed back to the operating system; those freed later are kept. Before
@@ -14,10 +15,12 @@ void keep_freed_pages();
 // 2 threads, about 70 MB less peak and no slower (docs/BENCHMARKS.md, "Nineteenth run").
 void release_free_pages();
 
-// From here to the end of the run: free pages are handed back to the operating system, those free
-// now and those freed later. For the output stage of a large drawing, which frees more than it
-// then allocates: its allocations come from pages handed back instead of adding to the peak the
-// lines stage left (1M faces: 125 MB less at about 0.3 s, docs/BENCHMARKS.md "Sixteenth run").
+// From here to keep_freed_pages: free pages are handed back to the operating system, those free
+// now and those freed later. For the precedence and rounding of a large drawing, which free more
+// than they then allocate: their allocations come from pages handed back instead of adding to the
+// peak the lines stage left (1M faces: 125 MB less, docs/BENCHMARKS.md "Sixteenth run"). Each
+// freed span is then one madvise call: 1.7 s at 1M faces in the twentieth run, so the solution's
+// own freeing, after the rounding, keeps its pages for the outputs (DrawOptions::drawing_rounded).
 void return_freed_pages();
 
 }  // namespace hlr::app

@@ -164,6 +164,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
   mark = std::chrono::steady_clock::now();
   LineDrawing drawing =
       make_drawing<K>(scene.input, frame, kernel_kind_of<K>(), solution->lines, std::move(solution->segments), progress.stop);
+  if (options.drawing_rounded) options.drawing_rounded();
   if (!options.free_at_exit || options.free_once_drawn) solution.reset();
   attach_source_curves(drawing, scene.meshes);
   times.write = seconds_since(mark);

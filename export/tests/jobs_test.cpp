@@ -38,16 +38,18 @@ TEST(Jobs, DrawLinesReportsItsStagesAndTheOutputStageHookInOrder) {
   DrawOptions options;
   options.progress.stage = [&](std::string_view s) { stages.emplace_back(s); };
   options.output_stage_begins = [&] { stages.emplace_back("(output stage begins)"); };
+  options.drawing_rounded = [&] { stages.emplace_back("(drawing rounded)"); };
   const LineDrawing drawing = draw_lines(scene, iso(), options);
   EXPECT_GT(drawing.stats.lines, 0u);
   // No sort: a drawing's lines are classified against the polygons themselves. The output stage's
-  // hook comes once, after them.
-  ASSERT_EQ(stages.size(), 5u);
+  // hook comes once, after them, and the rounding's once, last.
+  ASSERT_EQ(stages.size(), 6u);
   EXPECT_EQ(stages[0], "finding where faces penetrate");
   EXPECT_NE(stages[1].find("building polygons (exact)"), std::string::npos);
   EXPECT_EQ(stages[2], "classifying feature lines");
   EXPECT_EQ(stages[3], "(output stage begins)");
   EXPECT_EQ(stages[4], "drawing coincident pieces once (ISO 128 precedence)");
+  EXPECT_EQ(stages[5], "(drawing rounded)");
 }
 
 TEST(Jobs, DrawLinesStopsWhenAskedBetweenStages) {

@@ -57,6 +57,11 @@ struct DrawOptions {
   // output stage (draw_lines only): where a program may have its allocator hand free pages back
   // to the operating system (app/src/program_allocator.hpp). Null: nothing is called.
   std::function<void()> output_stage_begins;
+  // Called once the drawing is rounded, before the solution is freed (free_once_drawn, draw_lines
+  // only): the outputs then take less than it frees, so a program may have its allocator keep the
+  // pages freed from here for them, rather than hand each back and fault it in again. Null: nothing
+  // is called.
+  std::function<void()> drawing_rounded;
   // Called as the lines stage begins when the penetrations were found beside the polygons, on a
   // second thread (draw_lines only): that search's freed pages then lie between the polygons' in
   // runs too short for the lines' array, and a program may hand them back to the operating system

@@ -31,6 +31,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -1021,6 +1022,8 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // line's ends are shared along its curve, classify_lines), which halves them in a large drawing.
   if constexpr (G::exact_constructions) {
     std::vector<std::pair<std::array<std::uintptr_t, 2>, std::uint32_t>> shared_ends;  // ((x, y) reps, 2 line + end)
+    shared_ends.reserve(2 * std::size_t(std::count_if(lines.lines.begin(), lines.lines.end(),
+                                                      [](const FeatureLine<K>& l) { return !l.has_model_ends; })));
     for (std::uint32_t i = 0; i < n; ++i) {
       const FeatureLine<K>& l = lines.lines[i];
       if (l.has_model_ends) continue;
@@ -1057,10 +1060,14 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // A candidate filter in double (it decides nothing): each line's unit direction from the
   // centres of its ends' interval boxes, and a bound on that direction's error. Two lines whose
   // directions' cross product exceeds both bounds are certainly not parallel, so not collinear.
+  // A line without one (error HUGE_VAL) goes by its box.
   struct Direction {
-    double x = 0, y = 0, error = HUGE_VAL;
+    double x, y, error;
   };
-  std::vector<Direction> directions(n);
+  // The large arrays below are made untouched and filled in parallel (or room is kept for them):
+  // a large drawing's fresh pages are much of this stage's time, and so are faulted in on every
+  // thread. Keys are boxes, whose default constructor writes nothing.
+  auto directions = std::make_unique_for_overwrite<Direction[]>(n);
   // Lines are filed by where they lie, not by their boxes, which overlap a great many others in
   // a large drawing: by their angle in (-pi/2, pi/2], their offset from the origin along the
   // normal, and where they lie along their direction, each with a bound on its error, so that
@@ -1070,10 +1077,13 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // rims of a plate seen edge-on do: angle and offset alone would pair each with all the others.
   // Lines whose direction is too uncertain go by their boxes.
   using Key = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t, CGAL::Box_intersection_d::ID_NONE>;
-  std::vector<Key> keys(n);
+  std::vector<Key> keys;
+  keys.reserve(2 * std::size_t(n));  // with their mirrors (below), at most one per line
+  keys.resize(n);
   std::vector<char> is_uncertain(n, 0);
   constexpr double kHalfTurn = std::numbers::pi;
   auto file = [&](std::uint32_t i) {
+    directions[i] = {0, 0, HUGE_VAL};
     if (lines.lines[i].pieces.empty()) return;
     const CGAL::Bbox_2 a = G::bbox(images[i].a), b = G::bbox(images[i].b);
     const double dx = (b.xmin() + b.xmax() - a.xmin() - a.xmax()) / 2, dy = (b.ymin() + b.ymax() - a.ymin() - a.ymax()) / 2;
@@ -1110,6 +1120,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   std::vector<std::uint32_t> uncertain;
   CGAL::Bbox_2 box_domain;
   std::vector<Key> mirrored;
+  mirrored.reserve(n);
   std::size_t filed = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
     if (is_uncertain[i]) {
@@ -1176,7 +1187,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     for (const auto& [i, j] : mine.pairs) groups.join(i, j);
   // What only the joining needed is freed before the spans are listed.
   joined.clear();
-  std::vector<Direction>().swap(directions);
+  directions.reset();
   std::vector<char>().swap(is_uncertain);
 
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the

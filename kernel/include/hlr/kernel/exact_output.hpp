@@ -75,6 +75,13 @@ class RecipePointRep final : public LazyPoint3 {
  private:
   ModelPointRecipe recipe_;
 };
+
+// p's rep when lazy_point made it, else null.
+inline const RecipePointRep* recipe_rep(const ExactKernel::Point_3& p) {
+  // CGAL's Lazy keeps its rep pointer private; Handle hands it out untyped (for Compact_container).
+  const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(p).for_compact_container());
+  return dynamic_cast<const RecipePointRep*>(rep);
+}
 }  // namespace exact_output_detail
 
 // The recipe's point as a lazy exact point, given intervals that hold it: its exact coordinates
@@ -88,9 +95,7 @@ inline ExactKernel::Point_3 lazy_point(const ModelPointRecipe& recipe,
 // A lazy_point made again: the same recipe and intervals in a rep of its own (any other point is
 // returned as it is). For moving the points a computation keeps away from those it dropped.
 inline ExactKernel::Point_3 remade(const ExactKernel::Point_3& p) {
-  // CGAL's Lazy keeps its rep pointer private; Handle hands it out untyped (for Compact_container).
-  const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(p).for_compact_container());
-  const auto* made = dynamic_cast<const exact_output_detail::RecipePointRep*>(rep);
+  const auto* made = exact_output_detail::recipe_rep(p);
   if (!made) return p;
   const auto& a = p.approx();
   return lazy_point(made->recipe(), {a[0], a[1], a[2]});
@@ -100,9 +105,7 @@ inline ExactKernel::Point_3 remade(const ExactKernel::Point_3& p) {
 // lazy_point's recipe; an input point where every interval is a single double (an interval holds
 // the exact value, so that double is the coordinate); else unknown.
 inline ModelPointRecipe recipe_of(const ExactKernel::Point_3& p) {
-  // CGAL's Lazy keeps its rep pointer private; Handle hands it out untyped (for Compact_container).
-  const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(p).for_compact_container());
-  if (const auto* made = dynamic_cast<const exact_output_detail::RecipePointRep*>(rep)) return made->recipe();
+  if (const auto* made = exact_output_detail::recipe_rep(p)) return made->recipe();
   const auto& a = p.approx();
   for (int k = 0; k < 3; ++k)
     if (a[k].inf() != a[k].sup()) return {};

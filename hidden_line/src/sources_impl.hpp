@@ -78,7 +78,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
     std::vector<clip::LineId> edge_line(topo.uses.size());
     auto& edge_lines = out.edge_lines.emplace_back();
     std::size_t edge_count = 0;  // grown by doubling, edge_lines would keep up to half of it unused
-    for (std::size_t i = 0; i < topo.uses.size(); ++i) edge_count += i == 0 || topo.uses[i].key != topo.uses[i - 1].key;
+    for_each_edge(topo.uses, [&](EdgeUses, EdgeUses) { ++edge_count; });
     edge_lines.reserve(edge_count);
     for (std::size_t i = 0; i < topo.uses.size(); ++i) {
       if (i > 0 && topo.uses[i].key == topo.uses[i - 1].key) {

@@ -4,6 +4,14 @@
 
 namespace hlr::app {
 
+// From here (the run's start): memory that tcmalloc takes from the system 2 MB or more at a time is
+// faulted in by one madvise call (MADV_POPULATE_WRITE) rather than a fault per page as it is first
+// written: the large arrays of a large scene. On the benchmark machine (a virtual machine) a first
+// write to a fresh page costs about 14 us and a page faulted in beforehand half as much (1M faces
+// on 2 threads: 12.9 s against 12.0 s, docs/BENCHMARKS.md "Twenty-first run"). Growth below 2 MB
+// is left as it was: a small run uses a few of its pages, and would pay for all of them.
+void prefault_large_allocations();
+
 // From here (the run's start, or after return_freed_pages): freed pages are kept for the next stage
 // to reuse. Pages handed back sooner are faulted in and zeroed again by the next stage that grows
 // (0.7 s of a 1M-face draw's output stage, docs/BENCHMARKS.md; a fault costs about 14 us on the

@@ -458,6 +458,9 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   });
   // The pieces of each pair of groups, in chunk order: a stable sort of references by key.
   std::vector<std::pair<GroupPair, const Piece*>> by_group;
+  std::size_t pieces = 0;
+  for (const auto& chunk : chunk_pieces) pieces += chunk.size();
+  by_group.reserve(pieces);
   for (const auto& chunk : chunk_pieces)
     for (const auto& [key, piece] : chunk) by_group.emplace_back(key, &piece);
   std::stable_sort(by_group.begin(), by_group.end(), [](const auto& x, const auto& y) { return x.first < y.first; });

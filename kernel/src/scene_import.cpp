@@ -19,6 +19,7 @@
 #include <limits>
 #include <locale.h>
 #include <memory>
+#include <sys/stat.h>
 
 namespace hlr {
 namespace scene_detail {
@@ -156,6 +157,9 @@ std::string read_file(const std::string& path) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) throw ImportError(path + ": cannot open (" + std::strerror(errno) + ")");
   std::string bytes;
+  // Room for all of a regular file at once (anything else is read all the same).
+  struct stat info;
+  if (::fstat(::fileno(file.get()), &info) == 0 && S_ISREG(info.st_mode)) bytes.reserve(std::size_t(info.st_size));
   char buffer[1 << 16];
   for (;;) {
     std::size_t got = std::fread(buffer, 1, sizeof buffer, file.get());

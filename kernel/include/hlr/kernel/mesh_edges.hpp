@@ -33,6 +33,9 @@ inline std::uint32_t edge_high(std::uint64_t key) { return std::uint32_t(key); }
 // Every face's edge uses, sorted by (key, face).
 inline std::vector<EdgeUse> edge_uses(const Mesh& mesh) {
   std::vector<EdgeUse> uses;
+  std::size_t corners = 0;
+  for (const auto& face : mesh.faces) corners += face.size();
+  uses.reserve(corners);
   std::uint32_t vertices = 0;
   for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
     const auto& face = mesh.faces[f];

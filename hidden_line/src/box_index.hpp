@@ -217,14 +217,50 @@ class LooseGrid {
     slack_y_ = 1e-15 * (std::abs(domain_.ymin()) + std::abs(domain_.ymax()));
   }
 
-  // Files the box (cell_of).
+  // A frozen grid of boxes[id] for every id, filed at once: the grid that inserting each in turn
+  // and freezing makes, made without a vector per cell (and where threads are allowed, placed on
+  // all of them).
+  LooseGrid(const CGAL::Bbox_2& domain, std::vector<CGAL::Bbox_2> boxes) : LooseGrid(domain, boxes.size()) {
+    boxes_ = std::move(boxes);
+    // Where each box is filed: its level in the top byte, its cell below (levels_ <= 11, so
+    // fewer than 2^20 cells a level).
+    std::vector<std::uint32_t> where(boxes_.size());
+    parallel_chunks(boxes_.size(), 4096, [&](const auto& range) {
+      for (std::size_t id = range.begin(); id != range.end(); ++id) {
+        const int l = level_of(boxes_[id]);
+        where[id] = std::uint32_t(l) << 24 | std::uint32_t(cell_index(boxes_[id], l));
+      }
+    });
+    frozen_.resize(std::size_t(levels_));
+    for (const std::uint32_t w : where) ++filed_[w >> 24];
+    for (int l = 0; l < levels_; ++l)
+      if (filed_[l] > 0) frozen_[l].start.assign((std::size_t(1) << (2 * l)) + 1, 0);
+    for (const std::uint32_t w : where) ++frozen_[w >> 24].start[(w & 0xffffff) + 1];
+    std::vector<std::vector<std::uint32_t>> next(static_cast<std::size_t>(levels_));  // per level, per cell
+    for (int l = 0; l < levels_; ++l) {
+      if (filed_[l] == 0) continue;
+      auto& start = frozen_[l].start;
+      for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+      frozen_[l].ids.resize(filed_[l]);
+      next[l].assign(start.begin(), start.end() - 1);
+    }
+    for (std::uint32_t id = 0; id < where.size(); ++id) {
+      const std::uint32_t l = where[id] >> 24, c = where[id] & 0xffffff;
+      frozen_[l].ids[next[l][c]++] = id;
+    }
+  }
+
+  const CGAL::Bbox_2& domain() const { return domain_; }
+  const CGAL::Bbox_2& box(std::uint32_t id) const { return boxes_[id]; }
+
+  // Files the box (cell_index).
   void insert(std::uint32_t id, const CGAL::Bbox_2& box) {
     if (!frozen_.empty()) throw std::logic_error("LooseGrid: insert after freeze");
     if (id >= boxes_.size()) boxes_.resize(id + 1);
     boxes_[id] = box;
     const int l = level_of(box);
     if (cells_[l].empty()) cells_[l].resize(std::size_t(1) << (2 * l));
-    cell_of(box, l).push_back(id);
+    cells_[l][cell_index(box, l)].push_back(id);
     ++filed_[l];
   }
 
@@ -234,7 +270,7 @@ class LooseGrid {
     if (!frozen_.empty()) throw std::logic_error("LooseGrid: remove after freeze");
     const int l = level_of(boxes_[id]);
     if (cells_[l].empty()) return;
-    auto& ids = cell_of(boxes_[id], l);
+    auto& ids = cells_[l][cell_index(boxes_[id], l)];
     const auto it = std::find(ids.begin(), ids.end(), id);
     if (it == ids.end()) return;
     *it = ids.back();
@@ -306,9 +342,9 @@ class LooseGrid {
     while (l > 0 && (box.xmax() - box.xmin() > cell_w(l) || box.ymax() - box.ymin() > cell_h(l))) --l;
     return l;
   }
-  std::vector<std::uint32_t>& cell_of(const CGAL::Bbox_2& box, int l) {
+  std::size_t cell_index(const CGAL::Bbox_2& box, int l) const {
     const double cx = box.xmin() + (box.xmax() - box.xmin()) / 2, cy = box.ymin() + (box.ymax() - box.ymin()) / 2;
-    return cells_[l][index(l, cell(cx, domain_.xmin(), cell_w(l), l), cell(cy, domain_.ymin(), cell_h(l), l))];
+    return index(l, cell(cx, domain_.xmin(), cell_w(l), l), cell(cy, domain_.ymin(), cell_h(l), l));
   }
   static std::size_t index(int l, long x, long y) { return std::size_t(y) * (std::size_t(1) << l) + std::size_t(x); }
 

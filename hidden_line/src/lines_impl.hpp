@@ -345,12 +345,14 @@ class Classifier {
   Classifier(const std::vector<Mesh>& meshes, const ViewFrame<K>& frame, const Sources<K>& sources,
              std::vector<Cover<K>> covers)
       : meshes_(meshes), sources_(sources), covers_(std::move(covers)), view_points_(sources.view_points),
-        grid_(domain(covers_), covers_.size()),
-        edge_on_grid_(domain(covers_), std::max<std::size_t>(sources.edge_on_edges.size(), 1)) {
+        grid_(filed(covers_)),
+        edge_on_grid_(grid_.domain(), std::max<std::size_t>(sources.edge_on_edges.size(), 1)) {
     source_of_face_.resize(meshes.size());
     for (std::size_t m = 0; m < meshes.size(); ++m) source_of_face_[m].assign(meshes[m].faces.size(), -1);
-    for (std::size_t s = 0; s < sources.polygons.size(); ++s)
-      for (std::uint32_t f : sources.polygons[s].faces) source_of_face_[sources.polygons[s].mesh][f] = std::int32_t(s);
+    parallel_chunks(sources.polygons.size(), 4096, [&](const auto& range) {  // each face has one source
+      for (std::size_t s = range.begin(); s != range.end(); ++s)
+        for (std::uint32_t f : sources.polygons[s].faces) source_of_face_[sources.polygons[s].mesh][f] = std::int32_t(s);
+    });
     // The sources through each mesh vertex: their planes contain it exactly. Counted, then filled;
     // sources come in order, so each vertex's list is sorted.
     vertex_sources_.resize(meshes.size());
@@ -377,15 +379,16 @@ class Classifier {
       next[m].assign(vs.start.begin(), vs.start.end() - 1);
     }
     each_vertex_source([&](std::uint32_t m, std::uint32_t v, std::int32_t s) { vertex_sources_[m].sources[next[m][v]++] = s; });
-    boxes_.reserve(covers_.size());
-    hole_box_start_.reserve(covers_.size() + 1);
-    for (std::uint32_t i = 0; i < covers_.size(); ++i) {
-      grid_.insert(i, boxes_.emplace_back(box_of(*covers_[i].polygon)));
-      hole_box_start_.push_back(std::uint32_t(hole_boxes_.size()));
-      for (const auto& h : covers_[i].polygon->holes) hole_boxes_.push_back(box_of(h));
-    }
-    hole_box_start_.push_back(std::uint32_t(hole_boxes_.size()));
-    grid_.freeze();
+    hole_box_start_.assign(covers_.size() + 1, 0);
+    for (std::uint32_t i = 0; i < covers_.size(); ++i)
+      hole_box_start_[i + 1] = hole_box_start_[i] + std::uint32_t(covers_[i].polygon->holes.size());
+    hole_boxes_.resize(hole_box_start_.back());
+    parallel_chunks(covers_.size(), 4096, [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const auto& holes = covers_[i].polygon->holes;
+        for (std::size_t h = 0; h < holes.size(); ++h) hole_boxes_[hole_box_start_[i] + h] = box_of(holes[h]);
+      }
+    });
     // Orthographic views on the exact kernel decide depths in model space, on the input doubles.
     if constexpr (G::exact_constructions)
       if (!frame.perspective()) {
@@ -396,11 +399,13 @@ class Classifier {
           model_turns_.push_back(static_cast<std::int8_t>(plane.turn()));
         }
       }
-    nearest_.reserve(covers_.size());
-    for (const Cover<K>& c : covers_) {
-      const SourcePolygon<K>& source = sources.polygons[c.source];
-      nearest_.push_back(source.plane ? nearest_depth(*c.polygon, *source.plane) : nearest_vertex(source));
-    }
+    nearest_.resize(covers_.size());
+    parallel_chunks(covers_.size(), 4096, [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const SourcePolygon<K>& source = sources.polygons[covers_[i].source];
+        nearest_[i] = source.plane ? nearest_depth(*covers_[i].polygon, *source.plane) : nearest_vertex(source);
+      }
+    });
     for (std::uint32_t i = 0; i < sources.edge_on_edges.size(); ++i) {
       const auto [m, v0, v1] = sources.edge_on_edges[i];
       edge_on_grid_.insert(i, G::bbox(image(m, v0)) + G::bbox(image(m, v1)));
@@ -606,7 +611,7 @@ class Classifier {
       // Never strictly nearer along the line (the depth difference is linear in t).
       if (depth.sign0 <= 0 && depth.sign1 <= 0) return false;
       // A line across the box's corner: the boxes overlap, the cover lies off the line.
-      if (line_misses_box<K>(line.a, line.b, boxes_[i])) return false;
+      if (line_misses_box<K>(line.a, line.b, grid_.box(i))) return false;
       const bool nearer_all_along = depth.sign0 > 0 && depth.sign1 > 0;
       bool added = false;
       const std::span<const CGAL::Bbox_2> hole_boxes(hole_boxes_.data() + hole_box_start_[i],
@@ -671,10 +676,15 @@ class Classifier {
   }
 
  private:
-  static CGAL::Bbox_2 domain(const std::vector<Cover<K>>& covers) {
-    CGAL::Bbox_2 box;
-    for (const auto& c : covers) box += box_of(*c.polygon);
-    return box;
+  // The covers' polygons' boxes in a grid over all of them.
+  static LooseGrid filed(const std::vector<Cover<K>>& covers) {
+    std::vector<CGAL::Bbox_2> boxes(covers.size());
+    parallel_chunks(covers.size(), 4096, [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) boxes[i] = box_of(*covers[i].polygon);
+    });
+    CGAL::Bbox_2 domain;
+    for (const auto& box : boxes) domain += box;
+    return LooseGrid(domain, std::move(boxes));
   }
   const P& image(std::uint32_t mesh, std::uint32_t v) const { return sources_.image_points[mesh][v]; }
   // An upper bound of the depth over a source: at its faces' corners (z is linear over each face).
@@ -727,12 +737,12 @@ class Classifier {
     std::vector<std::int32_t> sources;
   };
   std::vector<VertexSources> vertex_sources_;
-  std::vector<CGAL::Bbox_2> boxes_;  // of covers_' polygons
   // The boxes of cover i's holes are hole_boxes_[hole_box_start_[i] .. hole_box_start_[i + 1]).
   std::vector<CGAL::Bbox_2> hole_boxes_;
   std::vector<std::uint32_t> hole_box_start_;
   std::vector<double> nearest_;      // nearest_depth of covers_' polygons
-  LooseGrid grid_, edge_on_grid_;
+  LooseGrid grid_;  // of covers_' polygons
+  LooseGrid edge_on_grid_;
 };
 
 // Sorts (key, item) pairs and calls run(items) once for each run of one key, with the items of

@@ -71,6 +71,33 @@ RC_GTEST_PROP(LooseGrid, VisitsExactlyTheOverlappingBoxesOnce, ()) {
   RC_ASSERT_THROWS_AS(frozen.insert(0, boxes[0]), std::logic_error);
 }
 
+// Filed at once (the line classification's covers), on one thread and on two, a grid visits the
+// ids in the order the grid made by inserting them one by one and freezing does.
+RC_GTEST_PROP(LooseGrid, FiledAtOnceIsTheGridInsertedInTurn, ()) {
+  const double origin = *rc::gen::element(0.0, 1e9, -3.5e6, 1e-9);
+  const double unit = *rc::gen::element(1.0, 1e-3, 0.1, 1e-9, 7.0);
+  // Above parallel_chunks' grain at times, so that two threads file the boxes.
+  const std::size_t n = *rc::gen::weightedOneOf<std::size_t>({{3, rc::gen::inRange<std::size_t>(0, 300)},
+                                                              {1, rc::gen::inRange<std::size_t>(4000, 9000)}});
+  std::vector<CGAL::Bbox_2> boxes;
+  CGAL::Bbox_2 domain;
+  for (std::size_t i = 0; i < n; ++i) domain += boxes.emplace_back(random_box(origin, unit));
+  LooseGrid inserted(domain, n);
+  for (std::uint32_t i = 0; i < n; ++i) inserted.insert(i, boxes[i]);
+  inserted.freeze();
+  const int threads = *rc::gen::inRange(1, 3);
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  const LooseGrid filed(domain, boxes);
+  for (int q = 0; q < 20; ++q) {
+    const CGAL::Bbox_2 query = random_box(origin, unit);
+    std::vector<std::uint32_t> visited, visited_filed;
+    inserted.query(query, [&](std::uint32_t id) { visited.push_back(id); });
+    filed.query(query, [&](std::uint32_t id) { visited_filed.push_back(id); });
+    RC_ASSERT(visited_filed == visited);
+  }
+  for (std::uint32_t i = 0; i < n; ++i) RC_ASSERT(filed.box(i) == boxes[i]);
+}
+
 // A 3D box as the penetration search makes them: mostly small, some flat (faces square to an
 // axis), points, and long slivers across much of the scene (which the pair search sweeps apart).
 CGAL::Bbox_3 random_box_3(double origin, double unit) {

@@ -7,10 +7,13 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
 
+#include <tbb/parallel_for.h>
+
 #include <unordered_map>
 
+#include <algorithm>
 #include <array>
-#include <deque>
+#include <iterator>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -54,21 +57,32 @@ auto angle_above(const std::array<NT, 3>& n1, const std::array<NT, 3>& n2, doubl
   return CGAL::is_negative(s) & (s * s > q);
 }
 
+// Calls body(begin, end) for the chunks [k grain, (k + 1) grain) of [0, size), on all threads
+// allowed, inline when there is one chunk (a small mesh does not start the scheduler).
+template <class Body>
+void in_chunks(std::size_t size, std::size_t grain, const Body& body) {
+  const std::size_t chunks = (size + grain - 1) / grain;
+  auto chunk = [&](std::size_t k) { body(k * grain, std::min(size, (k + 1) * grain)); };
+  if (chunks <= 1) {
+    if (size > 0) chunk(0);
+  } else {
+    tbb::parallel_for(std::size_t(0), chunks, chunk);
+  }
+}
+
 // Normals of every face, decided in interval arithmetic and, where the intervals cannot tell,
 // exactly: the facing signs, and the crease test between two faces.
 class FaceNormals {
  public:
   using IA = CGAL::Interval_nt<false>;
-  // Not a lazy number: edge-on faces and right-angled creases leave many faces to the exact
-  // stage, and a lazy number's first exact evaluation costs a std::call_once per node.
+  // Not a lazy number: edge-on faces leave many faces to the exact stage, and a lazy number's first
+  // exact evaluation costs a std::call_once per node.
   using FT = CGAL::Mpzf;
 
   // Facing: the sign of n·t with t toward the viewer: −d in an orthographic view; in a
   // perspective one e − p for a corner p, so that the face faces the viewer exactly when the eye
-  // lies on its front side.
-  FaceNormals(const Mesh& mesh, const View& view)
-      : mesh_(mesh), approx_(mesh.faces.size()), exact_slot_(mesh.faces.size(), kNone) {
-    facing_.resize(mesh.faces.size());
+  // lies on its front side. Faces in parallel chunks, each on its own.
+  FaceNormals(const Mesh& mesh, const View& view) : mesh_(mesh), approx_(mesh.faces.size()), facing_(mesh.faces.size()) {
     const double toward_viewer[3] = {-view.direction[0], -view.direction[1], -view.direction[2]};
     auto toward = [&]<class NT>(std::size_t f, NT) -> std::array<NT, 3> {
       if (!view.eye) return {NT(toward_viewer[0]), NT(toward_viewer[1]), NT(toward_viewer[2])};
@@ -76,23 +90,27 @@ class FaceNormals {
       const Vec3& e = *view.eye;
       return {NT(e[0]) - NT(p[0]), NT(e[1]) - NT(p[1]), NT(e[2]) - NT(p[2])};
     };
-    std::vector<std::size_t> undecided;
-    {
-      CGAL::Protect_FPU_rounding<true> protect;
-      for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        approx_[f] = face_normal<IA>(mesh, mesh.faces[f]);
-        const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(dot(approx_[f], toward(f, IA())));
-        if (CGAL::is_certain(sign)) facing_[f] = CGAL::get_certain(sign);
-        else undecided.push_back(f);
+    in_chunks(mesh.faces.size(), 4096, [&](std::size_t begin, std::size_t end) {
+      std::vector<std::size_t> undecided;
+      {
+        CGAL::Protect_FPU_rounding<true> protect;
+        for (std::size_t f = begin; f < end; ++f) {
+          approx_[f] = face_normal<IA>(mesh, mesh.faces[f]);
+          const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(dot(approx_[f], toward(f, IA())));
+          if (CGAL::is_certain(sign)) facing_[f] = CGAL::get_certain(sign);
+          else undecided.push_back(f);
+        }
       }
-    }
-    for (std::size_t f : undecided) facing_[f] = CGAL::sign(dot(exact(f), toward(f, FT())));
+      for (std::size_t f : undecided) facing_[f] = CGAL::sign(dot(exact(f), toward(f, FT())));
+    });
   }
 
   int facing(std::size_t f) const { return facing_[f]; }
 
-  // Whether faces f and g (g's normal times `flip`) meet at more than the crease angle.
-  bool crease(std::size_t f, std::size_t g, int flip, double cos_threshold) {
+  // Whether faces f and g (g's normal times `flip`) meet at more than the crease angle. From any
+  // thread: the exact normals it may need are made for the call (it needs them only where the
+  // angle is the crease angle, up to rounding).
+  bool crease(std::size_t f, std::size_t g, int flip, double cos_threshold) const {
     {
       CGAL::Protect_FPU_rounding<true> protect;
       std::array<IA, 3> ng = approx_[g];
@@ -106,20 +124,10 @@ class FaceNormals {
   }
 
  private:
-  const std::array<FT, 3>& exact(std::size_t f) {
-    if (exact_slot_[f] == kNone) {
-      exact_slot_[f] = std::uint32_t(exact_.size());
-      exact_.push_back(face_normal<FT>(mesh_, mesh_.faces[f]));
-    }
-    return exact_[exact_slot_[f]];
-  }
+  std::array<FT, 3> exact(std::size_t f) const { return face_normal<FT>(mesh_, mesh_.faces[f]); }
 
   const Mesh& mesh_;
   std::vector<std::array<IA, 3>> approx_;
-  // The few exact normals asked for, in a deque (an Mpzf is some 90 bytes: not one per face).
-  static constexpr std::uint32_t kNone = ~std::uint32_t(0);
-  std::vector<std::uint32_t> exact_slot_;
-  std::deque<std::array<FT, 3>> exact_;
   std::vector<int> facing_;
 };
 
@@ -281,8 +289,8 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
     });
   }
 
-  std::vector<FeatureEdge> out;
-  for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
+  // An edge's feature, if it is one.
+  auto feature = [&](EdgeUses first, EdgeUses last) -> std::optional<FeatureEdge> {
     FeatureEdge edge;
     edge.v0 = edge_low(first->key);
     edge.v1 = edge_high(first->key);
@@ -307,9 +315,9 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
       } else if (!mesh.source_edges.empty()) {
         // Features from the B-rep: its edges, not the crease rule (features.hpp).
         const std::uint8_t source = first[0].source | first[1].source;
-        if (!(source & 1u)) return;
+        if (!(source & 1u)) return std::nullopt;
         if (source & 2u) {
-          if (!smooth_kind) return;
+          if (!smooth_kind) return std::nullopt;
           edge.kind = *smooth_kind;
         } else {
           edge.kind = FeatureKind::crease;
@@ -320,14 +328,41 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
         edge.kind = FeatureKind::group;
       } else if (surfaces) {
         const auto soft = soft_edge(first);
-        if (!soft || !surfaces->smooth(*soft)) return;
+        if (!soft || !surfaces->smooth(*soft)) return std::nullopt;
         edge.kind = *smooth_kind;
       } else {
-        return;
+        return std::nullopt;
       }
     }
-    out.push_back(std::move(edge));
+    return edge;
+  };
+  std::vector<FeatureEdge> out;
+  if (surfaces) {  // SmoothSurfaces learns as it is asked: one thread
+    for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
+      if (auto edge = feature(first, last)) out.push_back(std::move(*edge));
+    });
+    return out;
+  }
+  // Chunks of uses on every thread, each with the edges whose first use it holds, joined in order.
+  constexpr std::size_t kUses = 16384;
+  std::vector<std::vector<FeatureEdge>> found((uses.size() + kUses - 1) / kUses);
+  auto edge_start = [&](std::size_t u) {  // the first use at or after u that starts an edge
+    while (u > 0 && u < uses.size() && uses[u].key == uses[u - 1].key) ++u;
+    return uses.begin() + std::ptrdiff_t(std::min(u, uses.size()));
+  };
+  in_chunks(uses.size(), kUses, [&](std::size_t begin, std::size_t end) {
+    const EdgeUses last_edge_end = edge_start(end);
+    for (EdgeUses first = edge_start(begin); first != last_edge_end;) {
+      const std::uint64_t key = first->key;
+      const EdgeUses last = std::find_if(first, uses.end(), [key](const EdgeUse& u) { return u.key != key; });
+      if (auto edge = feature(first, last)) found[begin / kUses].push_back(std::move(*edge));
+      first = last;
+    }
   });
+  std::size_t count = 0;
+  for (const auto& edges : found) count += edges.size();
+  out.reserve(count);
+  for (auto& edges : found) std::move(edges.begin(), edges.end(), std::back_inserter(out));
   return out;
 }
 

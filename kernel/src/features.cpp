@@ -351,13 +351,9 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
     return uses.begin() + std::ptrdiff_t(std::min(u, uses.size()));
   };
   in_chunks(uses.size(), kUses, [&](std::size_t begin, std::size_t end) {
-    const EdgeUses last_edge_end = edge_start(end);
-    for (EdgeUses first = edge_start(begin); first != last_edge_end;) {
-      const std::uint64_t key = first->key;
-      const EdgeUses last = std::find_if(first, uses.end(), [key](const EdgeUse& u) { return u.key != key; });
+    for_each_edge(edge_start(begin), edge_start(end), [&](EdgeUses first, EdgeUses last) {
       if (auto edge = feature(first, last)) found[begin / kUses].push_back(std::move(*edge));
-      first = last;
-    }
+    });
   });
   std::size_t count = 0;
   for (const auto& edges : found) count += edges.size();

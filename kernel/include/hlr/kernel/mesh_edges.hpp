@@ -66,15 +66,20 @@ inline std::vector<EdgeUse> edge_uses(const Mesh& mesh) {
 
 using EdgeUses = std::vector<EdgeUse>::const_iterator;
 
-// Calls visit(first, last) for the uses of each mesh edge (uses sorted by key).
+// Calls visit(first, last) for the uses of each mesh edge in [begin, end) (uses sorted by key;
+// begin and end where edges start).
 template <class Visit>
-void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
-  for (EdgeUses first = uses.begin(); first != uses.end();) {
+void for_each_edge(EdgeUses begin, EdgeUses end, Visit&& visit) {
+  for (EdgeUses first = begin; first != end;) {
     const std::uint64_t key = first->key;
-    const EdgeUses last = std::find_if(first, uses.end(), [key](const EdgeUse& u) { return u.key != key; });
+    const EdgeUses last = std::find_if(first, end, [key](const EdgeUse& u) { return u.key != key; });
     visit(first, last);
     first = last;
   }
+}
+template <class Visit>
+void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
+  for_each_edge(uses.begin(), uses.end(), visit);
 }
 
 

@@ -18,6 +18,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <set>
 
 namespace hlr::exporter {
@@ -70,15 +71,11 @@ Extent extent_of(const std::vector<DrawingSegment>& segments, double widen) {
   return {x0 - widen, y0 - widen, x1 - x0 + 2 * widen, y1 - y0 + 2 * widen, n > 0 ? total / n : 1.0};
 }
 
-// Segment ids in a uniform grid of square cells; a segment is listed in every cell within
-// `widen` of it. A filter only: the cover test below decides. Each cell's list is a chain through
-// one array of entries, in the order of insertion (no container per cell: a large drawing has
-// millions of cells).
-class SegmentGrid {
+// A uniform grid of square cells sized for about n segments: the cells within `widen` of a
+// segment. A filter only: the cover test below decides.
+class GridCells {
  public:
-  // Sized for about n segments.
-  SegmentGrid(const Extent& extent, std::size_t n, double widen)
-      : widen_(widen), x0_(extent.x0), y0_(extent.y0) {
+  GridCells(const Extent& extent, std::size_t n, double widen) : widen_(widen), x0_(extent.x0), y0_(extent.y0) {
     const double w = extent.w, h = extent.h;
     // About one mean segment length per cell, at most 2048 cells a side and about 4 cells a segment.
     double cell = std::max({extent.mean_length, 2 * widen, std::max(w, h) / 2048});
@@ -87,37 +84,16 @@ class SegmentGrid {
     cell_ = cell;
     nx_ = std::clamp<long>(long(w / cell) + 1, 1, 4096);
     ny_ = std::clamp<long>(long(h / cell) + 1, 1, 4096);
-    first_.assign(std::size_t(nx_ * ny_), none);
-    last_.assign(std::size_t(nx_ * ny_), none);
-    entries_.reserve(4 * n);
   }
 
-  void insert(std::uint32_t id, const DrawingSegment& s) {
-    for_cells(s, [&](std::size_t cell) {
-      const auto entry = std::uint32_t(entries_.size());
-      entries_.push_back({id, none});
-      if (last_[cell] == none) first_[cell] = entry;
-      else entries_[last_[cell]].next = entry;
-      last_[cell] = entry;
-    });
+  std::size_t size() const { return std::size_t(nx_ * ny_); }
+  Point2 centre(std::size_t cell) const {
+    return {x0_ + (double(long(cell) % nx_) + 0.5) * cell_, y0_ + (double(long(cell) / nx_) + 0.5) * cell_};
   }
 
-  // Calls visit(id) for every listed segment that shares a cell with `s`, once per cell.
-  template <class Visit>
-  void query(const DrawingSegment& s, Visit&& visit) {
-    for_cells(s, [&](std::size_t cell) {
-      for (std::uint32_t e = first_[cell]; e != none; e = entries_[e].next) visit(entries_[e].id);
-    });
-  }
-
- private:
-  static constexpr std::uint32_t none = ~std::uint32_t(0);
-  struct Entry {
-    std::uint32_t id, next;
-  };
-
+  // Calls each(cell) for every cell within widen of s.
   template <class Each>
-  void for_cells(const DrawingSegment& s, Each&& each) {
+  void for_each(const DrawingSegment& s, Each&& each) const {
     auto index = [&](double v, double lo, long n) {
       const double q = std::floor((v - lo) / cell_);
       return q >= double(n - 1) ? n - 1 : q >= 0 ? long(q) : 0;  // NaN and below go to 0
@@ -137,58 +113,117 @@ class SegmentGrid {
       }
   }
 
+ private:
   double widen_, x0_ = 0, y0_ = 0, cell_ = 1;
   long nx_ = 1, ny_ = 1;
-  std::vector<std::uint32_t> first_, last_;  // per cell: its first and last entry, or none
-  std::vector<Entry> entries_;
 };
 
-// Only nearly parallel segments cover each other, so segments are filed by direction: one grid
-// per range of angles (modulo a half turn), and a query looks in its own range and the two beside
-// it. A range (pi/16) is far wider than the angle a cover allows (max_sine), so no cover is missed;
-// in a dense drawing this leaves about 3/16 of the neighbours to test.
-class DirectionalGrid {
+// The input segments, filed once: each cell's segments packed in one array in input order, each
+// with its line in single precision (its direction, and its offset from the cell's centre). A
+// query reads the segments near it in order, and passes over those that are not nearly parallel or
+// not near its line without looking them up: all but a few of those it meets. (Filing by direction
+// as well, in a grid per range of angles, made a query visit three times the cells, and each
+// cell's first entry is a cache miss in a large drawing: slower.)
+class FiledSegments {
  public:
-  static constexpr int ranges = 16;
-
-  DirectionalGrid(const std::vector<DrawingSegment>& segments, double widen) {
-    const Extent extent = extent_of(segments, widen);
-    std::array<std::size_t, ranges> count{};
-    for (const auto& s : segments) ++count[range_of(direction_of(s))];
-    for (int r = 0; r < ranges; ++r) grids_.emplace_back(extent, count[r], widen);
-  }
-
-  void insert(std::uint32_t id, const DrawingSegment& s, const Direction& d) {
-    grids_[range_of(d)].insert(id, s);
-    if (id >= stamp_.size()) stamp_.resize(id + 1, 0);
-  }
-
-  // Calls visit(id) once for every segment filed near `s` in a range beside its own.
-  template <class Visit>
-  void query(const DrawingSegment& s, const Direction& d, Visit&& visit) {
-    ++round_;
-    const int r = range_of(d);
-    for (const int q : {(r + ranges - 1) % ranges, r, (r + 1) % ranges})
-      grids_[q].query(s, [&](std::uint32_t id) {
-        if (stamp_[id] == round_) return;
-        stamp_[id] = round_;
-        visit(id);
+  FiledSegments(const std::vector<DrawingSegment>& segments, const std::vector<Direction>& directions,
+                const Extent& extent, double widen)
+      : cells_(extent, segments.size(), widen),
+        magnitude_(std::max({std::abs(extent.x0), std::abs(extent.y0), std::abs(extent.x0 + extent.w),
+                             std::abs(extent.y0 + extent.h)})) {
+    start_.assign(cells_.size() + 1, 0);
+    for (const auto& s : segments) cells_.for_each(s, [&](std::size_t c) { ++start_[c + 1]; });
+    for (std::size_t c = 0; c < cells_.size(); ++c) start_[c + 1] += start_[c];
+    entries_.resize(start_.back());
+    std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < segments.size(); ++i) {
+      const Point2& v = directions[i].unit;
+      cells_.for_each(segments[i], [&](std::size_t c) {
+        const float offset = float(cross(v, minus(segments[i].a, cells_.centre(c))));
+        entries_[next[c]++] = {i, float(v[0]), float(v[1]), offset};
       });
+    }
+  }
+
+  // Calls visit(id) for the segments near s that may cover part of it (cover_of) within
+  // `distance`; an id may come once per cell it shares with s.
+  template <class Visit>
+  void query(const DrawingSegment& s, const Direction& d, double distance, Visit&& visit) const {
+    // A cover needs the directions' sine within max_sine, and so s's start within
+    // distance + length * max_sine of the coverer's line. The single-precision directions and
+    // offsets are within 1.2e-7 of theirs relative to what they multiply or are, and the rest is
+    // rounding in double, within a few units in the last place of the drawing's coordinates.
+    const double filter_sine = max_sine + 1e-6, reach = distance + d.length * max_sine + 1e-13 * magnitude_;
+    cells_.for_each(s, [&](std::size_t c) {
+      const Point2 p = minus(s.a, cells_.centre(c));
+      const double p1 = std::abs(p[0]) + std::abs(p[1]);
+      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+        const Entry& e = entries_[k];
+        if (std::abs(d.unit[0] * e.y - d.unit[1] * e.x) > filter_sine) continue;
+        const double h = double(e.x) * p[1] - double(e.y) * p[0] - double(e.offset);
+        if (std::abs(h) > reach + 2e-7 * (p1 + std::abs(double(e.offset)))) continue;
+        visit(e.id);
+      }
+    });
   }
 
  private:
-  static int range_of(const Direction& d) {
-    double angle = std::atan2(d.unit[1], d.unit[0]);  // (-pi, pi]; NaN for a point
-    if (angle < 0) angle += M_PI;
-    const double r = std::floor(angle * (ranges / M_PI));
-    return r >= 0 && r < ranges ? int(r) : 0;
+  struct Entry {
+    std::uint32_t id;
+    float x, y;    // its unit direction
+    float offset;  // its line's offset from the cell's centre along the normal: cross(unit, a - centre)
+  };
+  GridCells cells_;
+  double magnitude_;                  // of the drawing's coordinates
+  std::vector<std::uint32_t> start_;  // cell c's entries are entries_[start_[c], start_[c + 1])
+  std::vector<Entry> entries_;
+};
+
+// The pieces of segments cut by the merge, filed as they are made: each cell's list a chain
+// through one array of entries, in the order of insertion. They are few (the segments cut are), so
+// one coarse grid holds them all and stays in the cache.
+class PieceGrid {
+ public:
+  PieceGrid(const Extent& extent, std::size_t n, double widen)
+      : cells_(extent, n, widen), first_(cells_.size(), none), last_(cells_.size(), none) {}
+
+  void insert(std::uint32_t id, const DrawingSegment& s) {
+    cells_.for_each(s, [&](std::size_t cell) {
+      const auto entry = std::uint32_t(entries_.size());
+      entries_.push_back({id, none});
+      if (last_[cell] == none) first_[cell] = entry;
+      else entries_[last_[cell]].next = entry;
+      last_[cell] = entry;
+    });
+    if (id >= stamp_.size()) stamp_.resize(id + 1, 0);
   }
 
-  std::vector<SegmentGrid> grids_;
+  // Calls visit(id) once for every piece filed near s.
+  template <class Visit>
+  void query(const DrawingSegment& s, Visit&& visit) {
+    if (entries_.empty()) return;
+    ++round_;
+    cells_.for_each(s, [&](std::size_t cell) {
+      for (std::uint32_t e = first_[cell]; e != none; e = entries_[e].next) {
+        const std::uint32_t id = entries_[e].id;
+        if (stamp_[id] == round_) continue;
+        stamp_[id] = round_;
+        visit(id);
+      }
+    });
+  }
+
+ private:
+  static constexpr std::uint32_t none = ~std::uint32_t(0);
+  struct Entry {
+    std::uint32_t id, next;
+  };
+  GridCells cells_;
+  std::vector<std::uint32_t> first_, last_;  // per cell: its first and last entry, or none
+  std::vector<Entry> entries_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t round_ = 0;
 };
-
 
 // A covered stretch [lo, hi] of S (arc length from S's start); an end that lies at an end of the
 // covering segment carries that end, which the cut piece ends on.
@@ -232,44 +267,60 @@ std::string lower(std::string s) {
   return s;
 }
 
-}  // namespace
-
-MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, double distance) {
+// merge_segments, with the candidates from the grids or, for the tests' oracle, every kept
+// segment and piece.
+MergedSegments merge(const std::vector<DrawingSegment>& segments, double distance, bool all_pairs) {
   MergedSegments out;
   if (!(distance > 0) || !std::isfinite(distance)) {
     out.segments = segments;
     return out;
   }
+  constexpr std::uint32_t none = ~std::uint32_t(0);
+  const std::size_t n = segments.size();
   // Precedence: visible, hidden, then thin (precedence_rank), input order within a class.
   std::vector<std::uint32_t> order;
+  order.reserve(n);
   for (int rank = 0; rank < 3; ++rank)
-    for (std::uint32_t i = 0; i < segments.size(); ++i)
+    for (std::uint32_t i = 0; i < n; ++i)
       if (precedence_rank(segments[i]) == rank) order.push_back(i);
 
-  DirectionalGrid grid(segments, distance);
-  std::vector<DrawingSegment> kept;
-  std::vector<Direction> kept_directions;
-  kept.reserve(segments.size());
-  kept_directions.reserve(segments.size());
-  // The pieces kept of segment i are kept[pieces_of[i].first, pieces_of[i].second): a segment's
-  // pieces are kept one after the other, while it is the one being merged.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces_of(segments.size());
+  std::vector<Direction> directions(n);
+  for (std::size_t i = 0; i < n; ++i) directions[i] = direction_of(segments[i]);
+  const Extent extent = extent_of(segments, distance);
+  // A kept segment covers those merged after it. Nearly all are kept whole: they are found among
+  // the input segments, filed once; the pieces of the others are filed as they are cut.
+  std::optional<FiledSegments> filed;
+  if (!all_pairs) filed.emplace(segments, directions, extent, distance);
+  PieceGrid piece_grid(extent, n / 64, distance);
+  // Kept things are numbered in the order they are kept, which orders equal covers: kept_as[i]
+  // is segment i's number if it is kept whole, else none (not merged yet, or cut).
+  std::vector<std::uint32_t> kept_as(n, none), seen(n, none);
+  std::uint32_t kept_count = 0;
+  std::vector<DrawingSegment> pieces;
+  std::vector<Direction> piece_directions;
+  std::vector<std::uint32_t> piece_kept_as;
+  // The pieces of cut segment i are pieces[pieces_of[i].first, pieces_of[i].second).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces_of(n);
   std::vector<Cover> covers, runs;
   for (const std::uint32_t i : order) {
     const DrawingSegment& s = segments[i];
-    pieces_of[i] = {std::uint32_t(kept.size()), std::uint32_t(kept.size())};
+    const Direction& ds = directions[i];
     covers.clear();
-    const Direction ds = direction_of(s);
-    grid.query(s, ds, [&](std::uint32_t k) {
-      if (auto c = cover_of(s, ds, kept[k], kept_directions[k], distance)) c->by = k, covers.push_back(*c);
-    });
-    auto keep = [&](const DrawingSegment& piece) {
-      const Direction d = direction_of(piece);
-      grid.insert(std::uint32_t(kept.size()), piece, d);
-      kept.push_back(piece);
-      kept_directions.push_back(d);
-      pieces_of[i].second = std::uint32_t(kept.size());
+    auto segment_candidate = [&](std::uint32_t k) {
+      if (kept_as[k] == none || seen[k] == i) return;
+      seen[k] = i;
+      if (auto c = cover_of(s, ds, segments[k], directions[k], distance)) c->by = kept_as[k], covers.push_back(*c);
     };
+    auto piece_candidate = [&](std::uint32_t p) {
+      if (auto c = cover_of(s, ds, pieces[p], piece_directions[p], distance)) c->by = piece_kept_as[p], covers.push_back(*c);
+    };
+    if (all_pairs) {
+      for (std::uint32_t k = 0; k < n; ++k) segment_candidate(k);
+      for (std::uint32_t p = 0; p < pieces.size(); ++p) piece_candidate(p);
+    } else {
+      filed->query(s, ds, distance, segment_candidate);
+      piece_grid.query(s, piece_candidate);
+    }
     // Covers joined into runs where the gap between them is below the distance (such a gap is a
     // sliver of the same line). A run shorter than the distance is no overlap but two lines
     // meeting end to end (the neighbours along a tessellated curve), unless it is all of s.
@@ -287,10 +338,11 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     }
     std::erase_if(runs, [&](const Cover& r) { return r.hi - r.lo < distance && !(r.lo <= 0 && r.hi >= len); });
     if (runs.empty()) {
-      keep(s);
+      kept_as[i] = kept_count++;
       continue;
     }
     ++out.merged;
+    pieces_of[i] = {std::uint32_t(pieces.size()), std::uint32_t(pieces.size())};
     auto at = [&](double t) -> Point2 {
       return {s.a[0] + (s.b[0] - s.a[0]) * (t / len), s.a[1] + (s.b[1] - s.a[1]) * (t / len)};
     };
@@ -301,7 +353,12 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
       if (t1 - from < distance) return;
       DrawingSegment kept_piece = s;
       kept_piece.a = from_point, kept_piece.b = end;
-      keep(kept_piece);
+      const Direction d = direction_of(kept_piece);
+      piece_grid.insert(std::uint32_t(pieces.size()), kept_piece);
+      pieces.push_back(kept_piece);
+      piece_directions.push_back(d);
+      piece_kept_as.push_back(kept_count++);
+      pieces_of[i].second = std::uint32_t(pieces.size());
     };
     for (const Cover& r : runs) {
       if (r.lo > from) piece(r.lo, r.at_lo.value_or(at(r.lo)));
@@ -310,10 +367,22 @@ MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, doubl
     }
     if (from < len) piece(len, s.b);
   }
-  out.segments.reserve(kept.size());
-  for (const auto& [first, end] : pieces_of)
-    for (std::uint32_t k = first; k < end; ++k) out.segments.push_back(kept[k]);
+  out.segments.reserve(kept_count);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kept_as[i] != none) out.segments.push_back(segments[i]);
+    else out.segments.insert(out.segments.end(), pieces.begin() + pieces_of[i].first, pieces.begin() + pieces_of[i].second);
+  }
   return out;
+}
+
+}  // namespace
+
+MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, double distance) {
+  return merge(segments, distance, false);
+}
+
+MergedSegments detail::merge_segments_all_pairs(const std::vector<DrawingSegment>& segments, double distance) {
+  return merge(segments, distance, true);
 }
 
 std::vector<std::string> part_names(const LineDrawing& drawing) {

@@ -15,6 +15,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <random>
@@ -927,6 +928,59 @@ TEST(MergeSegments, ManySegmentsThroughTheGrid) {
   EXPECT_GE(r.merged, std::size_t(n));
   // The random ones may cover each other now and then, but nearly all stay.
   EXPECT_GT(random_kept, 1950u);
+}
+
+// The grids only filter: the merge must keep what the merge with every kept segment and piece as
+// a candidate keeps. Segments on a coarse grid, many repeated nearly on top of each other (moved,
+// turned, cut short or reversed by about the distance, above and below it), near and far from the
+// origin and at several scales, so that covers, cut pieces and pieces covering later segments are
+// common.
+TEST(MergeSegments, SameAsTheMergeWithEveryPairACandidate) {
+  std::mt19937_64 random(20261206);
+  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
+  auto pick = [&](int n) { return int(random() % unsigned(n)); };
+  std::size_t merged_total = 0;
+  for (int draw = 0; draw < 300; ++draw) {
+    const double scale = std::pow(10.0, pick(7) - 3), distance = 0.01 * scale;
+    const Point2 origin{pick(3) == 0 ? 1e6 * scale : 0.0, pick(3) == 0 ? -3e5 * scale : 0.0};
+    auto grid_point = [&] { return Point2{origin[0] + scale * pick(8), origin[1] + scale * pick(8)}; };
+    auto near = [&](const Point2& p) {
+      const double r = distance * std::array<double, 5>{0, 1e-5, 0.5, 1, 1.5}[pick(5)];
+      return Point2{p[0] + uniform(-r, r), p[1] + uniform(-r, r)};
+    };
+    std::vector<DrawingSegment> in;
+    const int n = 20 + pick(200);
+    for (int i = 0; i < n; ++i) {
+      DrawingSegment s;
+      if (in.empty() || pick(3) == 0) {
+        s = seg(grid_point(), grid_point());
+      } else {
+        s = in[std::size_t(pick(int(in.size())))];
+        s.a = near(s.a), s.b = near(s.b);
+        if (pick(4) == 0) {  // cut short
+          const double t = uniform(0, 1);
+          s.b = {s.a[0] + t * (s.b[0] - s.a[0]), s.a[1] + t * (s.b[1] - s.a[1])};
+        }
+        if (pick(2) == 0) std::swap(s.a, s.b);
+      }
+      s.visible = pick(3) != 0;
+      s.thin = pick(6) == 0;
+      s.mesh = std::uint32_t(pick(3));
+      s.line = std::uint32_t(i);
+      in.push_back(s);
+    }
+    const MergedSegments got = merge_segments(in, distance), want = detail::merge_segments_all_pairs(in, distance);
+    ASSERT_EQ(got.merged, want.merged) << draw;
+    ASSERT_EQ(got.segments.size(), want.segments.size()) << draw;
+    for (std::size_t k = 0; k < got.segments.size(); ++k) {
+      const DrawingSegment &g = got.segments[k], &w = want.segments[k];
+      ASSERT_TRUE(g.a == w.a && g.b == w.b && g.visible == w.visible && g.thin == w.thin && g.mesh == w.mesh &&
+                  g.line == w.line)
+          << draw << " segment " << k;
+    }
+    merged_total += got.merged;
+  }
+  EXPECT_GT(merged_total, 3000u);  // the draws do merge
 }
 
 TEST(SheetSegments, DistanceIsMillimetresOnTheSheet) {

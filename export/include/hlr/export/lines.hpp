@@ -218,6 +218,11 @@ struct MergedSegments {
   std::size_t contact = 0;  // sheet_segments: intersection segments left out as contact lines
 };
 MergedSegments merge_segments(const std::vector<DrawingSegment>& segments, double distance);
+namespace detail {
+// The same merge with every kept segment and piece a candidate for every segment: the tests'
+// oracle for merge_segments' grids.
+MergedSegments merge_segments_all_pairs(const std::vector<DrawingSegment>& segments, double distance);
+}  // namespace detail
 
 // What the SVG and DXF of `drawing` show with `style`: the drawn classes (hidden ones only if
 // style.hidden) without the contact lines (style.contact_degrees), merged at style.merge_distance

@@ -82,7 +82,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
     for (std::size_t index = range.begin(); index != range.end(); ++index)
       if (!lines.lines[index].pieces.empty()) round_ends(index);
   });
-  d.segments.resize(segments.size());
+  hidden_line::resize_in_parallel(d.segments, segments.size());
   hidden_line::parallel_chunks(segments.size(), 256, [&](const auto& range) {
     stop.check();
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -104,7 +104,7 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
   // Line i's pieces go to d.pieces[first[i], first[i + 1]).
   std::vector<std::size_t> first(lines.lines.size() + 1, 0);
   for (std::size_t i = 0; i < lines.lines.size(); ++i) first[i + 1] = first[i] + lines.lines[i].pieces.size();
-  d.pieces.resize(first.back());
+  hidden_line::resize_in_parallel(d.pieces, first.back());
   hidden_line::parallel_chunks(lines.lines.size(), 64, [&](const auto& range) {
     stop.check();
     for (std::size_t index = range.begin(); index != range.end(); ++index) {

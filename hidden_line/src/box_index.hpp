@@ -20,10 +20,13 @@
 #include <CGAL/Bbox_2.h>
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_reduce.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -71,14 +74,22 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
   auto overlap = [](const Swept& a, const Swept& b) {
     return b.lo <= a.hi && a.lo <= b.hi && b.ulo <= a.uhi && a.ulo <= b.uhi && b.vlo <= a.vhi && a.vlo <= b.vhi;
   };
-  std::vector<Swept> swept(n);
+  constexpr std::size_t kGrain = 16384;
+  // The set-up is on every thread too: at a million boxes its arrays' fresh pages and the sort
+  // took as long as the sweep.
+  std::vector<Swept> swept;
+  resize_in_parallel(swept, n);
+  parallel_chunks(n, kGrain, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const Box& b = boxes[i];
+      swept[i] = {b.min_coord(axis), b.max_coord(axis), b.min_coord(u), b.max_coord(u), b.min_coord(v), b.max_coord(v),
+                  std::uint32_t(i)};
+    }
+  });
   double umin = HUGE_VAL, umax = -HUGE_VAL, vmin = HUGE_VAL, vmax = -HUGE_VAL;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Box& b = boxes[i];
-    swept[i] = {b.min_coord(axis), b.max_coord(axis), b.min_coord(u), b.max_coord(u), b.min_coord(v), b.max_coord(v),
-                std::uint32_t(i)};
-    umin = std::min(umin, swept[i].ulo), umax = std::max(umax, swept[i].uhi);
-    vmin = std::min(vmin, swept[i].vlo), vmax = std::max(vmax, swept[i].vhi);
+  for (const Swept& b : swept) {
+    umin = std::min(umin, b.ulo), umax = std::max(umax, b.uhi);
+    vmin = std::min(vmin, b.vlo), vmax = std::max(vmax, b.vhi);
   }
   // Square columns, measured in parts of each axis's range (the axes may be in different units,
   // as precedence's angles and offsets are), as wide as the median box, at most n of them; two,
@@ -89,10 +100,13 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
   const bool split_u = urange > 0 && std::isfinite(urange), split_v = vrange > 0 && std::isfinite(vrange);
   double median = 0;
   {
-    std::vector<double> extent(n);
-    for (std::size_t i = 0; i < n; ++i)
-      extent[i] = std::max(split_u ? (swept[i].uhi - swept[i].ulo) / urange : 0.0,
-                           split_v ? (swept[i].vhi - swept[i].vlo) / vrange : 0.0);
+    std::vector<double> extent;
+    resize_in_parallel(extent, n);
+    parallel_chunks(n, kGrain, [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+        extent[i] = std::max(split_u ? (swept[i].uhi - swept[i].ulo) / urange : 0.0,
+                             split_v ? (swept[i].vhi - swept[i].vlo) / vrange : 0.0);
+    });
     std::nth_element(extent.begin(), extent.begin() + n / 2, extent.end());
     median = extent[n / 2];
   }
@@ -110,17 +124,28 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
     return Cells{std::uint32_t(cell(b.ulo, umin, su, nu)), std::uint32_t(cell(b.uhi, umin, su, nu)),
                  std::uint32_t(cell(b.vlo, vmin, sv, nv)), std::uint32_t(cell(b.vhi, vmin, sv, nv))};
   };
-  std::sort(swept.begin(), swept.end(),
-            [](const Swept& a, const Swept& b) { return a.lo < b.lo || (a.lo == b.lo && a.box < b.box); });
-  std::vector<Cells> cells(n);  // of swept[i], in the columns chosen
+  // A total order (ties by box), so the parallel sort's result is the one order. A small set is
+  // sorted and counted inline, as parallel_chunks runs a small range: starting the scheduler would
+  // take longer.
+  auto by_lower_end = [](const Swept& a, const Swept& b) { return a.lo < b.lo || (a.lo == b.lo && a.box < b.box); };
+  if (n <= kGrain) std::sort(swept.begin(), swept.end(), by_lower_end);
+  else tbb::parallel_sort(swept.begin(), swept.end(), by_lower_end);
+  std::vector<Cells> cells;  // of swept[i], in the columns chosen
+  resize_in_parallel(cells, n);
   for (double width = median;; width *= 2) {
     const std::size_t per_axis = width > 0 ? std::size_t(std::min(1 / width, double(n))) : n;
     nu = split_u ? std::max<std::size_t>(per_axis, 1) : 1;
     nv = split_v ? std::max<std::size_t>(per_axis, 1) : 1;
     while (nu * nv > n) (nu >= nv ? nu : nv) /= 2;
     su = nu > 1 ? double(nu) / urange : 0, sv = nv > 1 ? double(nv) / vrange : 0;
-    std::size_t entries = 0;
-    for (std::size_t i = 0; i < n; ++i) entries += std::min((cells[i] = cells_of(swept[i])).count(), kWideColumns);
+    auto count_entries = [&](const tbb::blocked_range<std::size_t>& range, std::size_t sum) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+        sum += std::min((cells[i] = cells_of(swept[i])).count(), kWideColumns);
+      return sum;
+    };
+    const tbb::blocked_range<std::size_t> all(0, n, kGrain);
+    const std::size_t entries = n <= kGrain ? count_entries(all, 0)
+                                            : tbb::parallel_reduce(all, std::size_t(0), count_entries, std::plus<>());
     if (entries <= 3 * n || !(width > 0 && width < 8 * median) || nu * nv == 1) break;
   }
 

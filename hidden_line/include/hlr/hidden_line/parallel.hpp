@@ -9,7 +9,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <vector>
 
 namespace hlr::hidden_line {
@@ -29,6 +31,27 @@ void free_in_parallel(std::vector<T>& v) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) v[i] = {};
   });
   std::vector<T>().swap(v);
+}
+
+// Resizes `v` to n value-initialized elements, the pages of its new room first written on every
+// thread: in a large drawing an array's fresh pages cost more than filling it does (a page fault
+// each), and faults on two threads overlap. (The bytes are written before the elements are made
+// there: storage the vector owns and no element lives in yet.)
+template <class T>
+void resize_in_parallel(std::vector<T>& v, std::size_t n) {
+  if (n <= v.size()) {
+    v.resize(n);
+    return;
+  }
+  v.reserve(n);
+  auto* room = reinterpret_cast<unsigned char*>(v.data() + v.size());
+  const std::size_t bytes = (n - v.size()) * sizeof(T);
+  constexpr std::size_t kChunk = std::size_t(1) << 20;
+  parallel_chunks((bytes + kChunk - 1) / kChunk, 1, [&](const auto& range) {
+    for (std::size_t c = range.begin(); c != range.end(); ++c)
+      std::memset(room + c * kChunk, 0, std::min(kChunk, bytes - c * kChunk));
+  });
+  v.resize(n);
 }
 
 }  // namespace hlr::hidden_line

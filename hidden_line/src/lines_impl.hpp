@@ -37,6 +37,7 @@
 #include <optional>
 #include <span>
 #include <unordered_map>
+#include <utility>
 
 namespace hlr::hidden_line {
 namespace detail {
@@ -987,11 +988,15 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
                                               const std::vector<std::vector<typename Geometry<K>::Point>>* vertex_images) {
   using G = Geometry<K>;
   using FT = typename G::FT;
+  // A piece of a line in precedence order (its parameters read where they are: no lazy numbers
+  // copied, and the spans made on every thread).
   struct Span {
     std::uint32_t line;
-    FT t0, t1;
+    const LinePiece<K>* piece;
     bool visible;
     bool thin;
+    const FT& t0() const { return piece->t0; }
+    const FT& t1() const { return piece->t1; }
   };
   // Each line's image ends; its parameters (detail::ImageLine) are made only for the lines that
   // need them: a large drawing's lines are nearly all drawn whole, alone on their image line.
@@ -1202,20 +1207,34 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
 
   // ISO 128-20's precedence: visible lines, then hidden ones, then thin continuous ones (the
   // visible pieces of smooth lines); hidden pieces of smooth lines are not drawn (lines.hpp).
-  auto for_each_span = [&](auto&& add) {
-    for (int pass = 0; pass < 3; ++pass)
-      for (std::uint32_t i = 0; i < lines.lines.size(); ++i) {
-        const bool smooth = lines.lines[i].kind == FeatureKind::smooth;
-        if (smooth != (pass == 2) || (smooth && pass == 1)) continue;
-        for (const auto& p : lines.lines[i].pieces)
-          if (p.visible == (pass != 1)) add(i, p, smooth);
-      }
+  // Spans by pass, then line, then piece: each line's spans of each pass counted, then written
+  // in place, on every thread.
+  auto pass_of = [](const FeatureLine<K>& l, const LinePiece<K>& p) {
+    if (l.kind != FeatureKind::smooth) return p.visible ? 0 : 1;
+    return p.visible ? 2 : -1;
   };
+  std::vector<std::uint32_t> place(3 * std::size_t(n));  // line i's first span of pass k: place[k n + i]
+  parallel_chunks(n, 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      std::uint32_t count[3] = {0, 0, 0};
+      for (const auto& p : lines.lines[i].pieces)
+        if (const int k = pass_of(lines.lines[i], p); k >= 0) ++count[k];
+      for (int k = 0; k < 3; ++k) place[k * n + i] = count[k];
+    }
+  });
+  std::uint32_t span_count = 0;
+  for (std::uint32_t& at : place) span_count += std::exchange(at, span_count);
   std::vector<Span> spans;
-  std::size_t span_count = 0;
-  for_each_span([&](std::uint32_t, const LinePiece<K>&, bool) { ++span_count; });
-  spans.reserve(span_count);
-  for_each_span([&](std::uint32_t i, const LinePiece<K>& p, bool smooth) { spans.push_back({i, p.t0, p.t1, p.visible, smooth}); });
+  resize_in_parallel(spans, span_count);
+  parallel_chunks(n, 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const FeatureLine<K>& l = lines.lines[i];
+      std::uint32_t next[3] = {place[i], place[n + i], place[2 * n + i]};
+      for (const auto& p : l.pieces)
+        if (const int k = pass_of(l, p); k >= 0) spans[next[k]++] = {std::uint32_t(i), &p, p.visible, k == 2};
+    }
+  });
+  std::vector<std::uint32_t>().swap(place);
 
   // The spans of each group, in span order (group_members from group_start[g]): a counting sort.
   std::vector<std::uint32_t> span_group(spans.size());
@@ -1247,11 +1266,11 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     const Span& span = spans[s];
     const ImageEnds& ends = images[span.line];
     const FeatureLine<K>& line = lines.lines[span.line];
-    const int end0 = detail::ImageLine<K>::exact_end(span.t0), end1 = detail::ImageLine<K>::exact_end(span.t1);
+    const int end0 = detail::ImageLine<K>::exact_end(span.t0()), end1 = detail::ImageLine<K>::exact_end(span.t1());
     std::optional<detail::ImageLine<K>> image;
     if (end0 != 0 || end1 != 1) image.emplace(ends.a, ends.b, line.a, line.b);
-    return DrawnSegment<K>{end0 == 0 ? ends.a : image->at(span.t0), end1 == 1 ? ends.b : image->at(span.t1), span.visible,
-                           line.mesh, line.meeting_degrees, span.line, span.thin, span.t0, span.t1};
+    return DrawnSegment<K>{end0 == 0 ? ends.a : image->at(span.t0()), end1 == 1 ? ends.b : image->at(span.t1()),
+                           span.visible, line.mesh, line.meeting_degrees, span.line, span.thin, span.t0(), span.t1()};
   };
   // One group of several lines' spans, in order: what each adds to the drawing, with its span index.
   auto solve_group = [&](std::span<const std::uint32_t> members,
@@ -1265,9 +1284,9 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       const Span& span = spans[s];
       const ImageEnds& ends = images[span.line];
       const FeatureLine<K>& line = lines.lines[span.line];
-      const int end0 = detail::ImageLine<K>::exact_end(span.t0), end1 = detail::ImageLine<K>::exact_end(span.t1);
+      const int end0 = detail::ImageLine<K>::exact_end(span.t0()), end1 = detail::ImageLine<K>::exact_end(span.t1());
       const detail::ImageLine<K> image(ends.a, ends.b, line.a, line.b);
-      const auto a = end0 == 0 ? ends.a : image.at(span.t0), b = end1 == 1 ? ends.b : image.at(span.t1);
+      const auto a = end0 == 0 ? ends.a : image.at(span.t0()), b = end1 == 1 ? ends.b : image.at(span.t1());
       std::vector<std::pair<FT, FT>> covered;
       grid.query(G::bbox(a) + G::bbox(b), [&](std::uint32_t i) {
         if (drawn_line[i] == span.line) return;
@@ -1277,13 +1296,13 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
           if (!collinear_lines(span.line, drawn_line[i])) return;
         FT lo = image.param_by_value(out[i].a), hi = image.param_by_value(out[i].b);
         if (hi < lo) std::swap(lo, hi);
-        lo = std::max(lo, span.t0);
-        hi = std::min(hi, span.t1);
+        lo = std::max(lo, span.t0());
+        hi = std::min(hi, span.t1());
         if (lo < hi) covered.emplace_back(lo, hi);
       });
       std::sort(covered.begin(), covered.end());
-      FT from = span.t0;
-      bool at_start = true;  // from is span.t0, whose point is a
+      FT from = span.t0();
+      bool at_start = true;  // from is span.t0(), whose point is a
       auto emit = [&](const FT& t0, const FT& t1, bool to_end) {
         const DrawnSegment<K> d{at_start ? a : image.at(t0), to_end ? b : image.at(t1), span.visible, line.mesh,
                                 line.meeting_degrees, span.line, span.thin, t0, t1};
@@ -1297,7 +1316,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
         from = std::max(from, hi);
         at_start = false;
       }
-      if (from < span.t1) emit(from, span.t1, true);
+      if (from < span.t1()) emit(from, span.t1(), true);
     }
   };
   std::vector<std::uint32_t> shared;  // the groups of more than one line

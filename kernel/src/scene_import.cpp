@@ -8,6 +8,8 @@
 #include "scene_faces.hpp"
 #include "scene_readers.hpp"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -255,8 +257,15 @@ Mesh finish(const std::string& path, RawMesh raw, ImportReport& report, bool kee
   // topology (analyse_mesh), only when it is kept.
   MeshTopology topology;
   topology.uses = edge_uses(mesh);
-  topology.sides = component_sides(mesh, topology.uses);
-  if (keep_topology) topology.groups = coplanar_groups(mesh, topology.uses);
+  auto find_sides = [&] { topology.sides = component_sides(mesh, topology.uses); };
+  auto find_groups = [&] {
+    if (keep_topology) topology.groups = coplanar_groups(mesh, topology.uses);
+  };
+  // Each reads the uses alone: side by side on a large mesh (a tenth of a second each at 1M faces),
+  // one after the other on a small one, which would wait longer for the scheduler to start.
+  constexpr std::size_t kFacesSideBySide = 50000;
+  if (keep_topology && mesh.faces.size() >= kFacesSideBySide) tbb::parallel_invoke(find_sides, find_groups);
+  else find_sides(), find_groups();
   const std::vector<EdgeUse>& uses = topology.uses;
   const std::size_t nonmanifold = count_nonmanifold(mesh, uses);
   const std::size_t inward = topology.sides.inward;

@@ -857,10 +857,10 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
       // the near plane taken out: no copy of their ends is held beside the lines, where the run's
       // memory peaks. Their own sources are counted first, then written in place.
       const std::size_t n = intersections.size();
-      out.lines.resize(first_intersection + n);
+      resize_in_parallel(out.lines, first_intersection + n);
       own_start.resize(first_intersection + n + 1);
       const bool rounds = !frame.perspective() && Geometry<K>::exact_constructions;
-      if (rounds) out.rounded_ends.resize(n);
+      if (rounds) resize_in_parallel(out.rounded_ends, n);
       // Perspective: per segment, whether it is wholly behind the near plane (bytes, not bits: the
       // chunks write it side by side).
       std::vector<std::uint8_t> behind;
@@ -1337,7 +1337,8 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   for (const auto& list : emitted)
     for (const auto& e : list) ++first[e.first + 1];
   for (std::size_t s = 0; s < spans.size(); ++s) first[s + 1] += first[s];
-  std::vector<DrawnSegment<K>> out(first.back());
+  std::vector<DrawnSegment<K>> out;
+  resize_in_parallel(out, first.back());
   parallel_chunks(spans.size(), 4096, [&](const auto& range) {
     stop.check();
     for (std::size_t s = range.begin(); s != range.end(); ++s)

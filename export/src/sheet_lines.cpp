@@ -8,8 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace hlr::exporter {
 namespace {
@@ -26,13 +24,6 @@ MergedSegments sheet_segments_at(const LineDrawing& drawing, const DrawingStyle&
     if (!s.visible && !style.hidden) continue;
     if (s.meeting_degrees < style.contact_degrees) ++contact;
     else drawn.push_back(s);
-  }
-  if (const char* f = std::getenv("HLR_DUMP")) {
-    FILE* o = std::fopen(f, "wb");
-    const double dist = style.merge_distance / scale;
-    std::fwrite(&dist, sizeof dist, 1, o);
-    std::fwrite(drawn.data(), sizeof(DrawingSegment), drawn.size(), o);
-    std::fclose(o);
   }
   MergedSegments out = merge_segments(drawn, style.merge_distance / scale);
   out.contact = contact;

@@ -1036,15 +1036,29 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // The other lines' ends: on the exact kernel, one image point per view point (an intersection
   // line's ends are shared along its curve, classify_lines), which halves them in a large drawing.
   if constexpr (G::exact_constructions) {
+    // Counted per chunk of lines, then written in place, on every thread.
+    constexpr std::size_t kChunk = 4096;
+    std::vector<std::size_t> chunk_start((n + kChunk - 1) / kChunk + 1, 0);
+    auto for_each_chunk = [&](auto&& each) {
+      parallel_chunks(chunk_start.size() - 1, 1, [&](const auto& range) {
+        for (std::size_t c = range.begin(); c != range.end(); ++c) each(c, c * kChunk, std::min(n, (c + 1) * kChunk));
+      });
+    };
+    for_each_chunk([&](std::size_t c, std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i != end; ++i) chunk_start[c + 1] += lines.lines[i].has_model_ends ? 0 : 2;
+    });
+    std::partial_sum(chunk_start.begin(), chunk_start.end(), chunk_start.begin());
     std::vector<std::pair<std::array<std::uintptr_t, 2>, std::uint32_t>> shared_ends;  // ((x, y) reps, 2 line + end)
-    shared_ends.reserve(2 * std::size_t(std::count_if(lines.lines.begin(), lines.lines.end(),
-                                                      [](const FeatureLine<K>& l) { return !l.has_model_ends; })));
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const FeatureLine<K>& l = lines.lines[i];
-      if (l.has_model_ends) continue;
-      shared_ends.push_back({{std::uintptr_t(l.a.x.id()), std::uintptr_t(l.a.y.id())}, 2 * i});
-      shared_ends.push_back({{std::uintptr_t(l.b.x.id()), std::uintptr_t(l.b.y.id())}, 2 * i + 1});
-    }
+    resize_in_parallel(shared_ends, chunk_start.back());
+    for_each_chunk([&](std::size_t c, std::size_t begin, std::size_t end) {
+      std::size_t at = chunk_start[c];
+      for (std::size_t i = begin; i != end; ++i) {
+        const FeatureLine<K>& l = lines.lines[i];
+        if (l.has_model_ends) continue;
+        shared_ends[at++] = {{std::uintptr_t(l.a.x.id()), std::uintptr_t(l.a.y.id())}, std::uint32_t(2 * i)};
+        shared_ends[at++] = {{std::uintptr_t(l.b.x.id()), std::uintptr_t(l.b.y.id())}, std::uint32_t(2 * i + 1)};
+      }
+    });
     detail::for_each_run_of_one_key(shared_ends, 4096, stop, [&](auto run) {
       const std::uint32_t first = run.front().second;
       const ViewPoint<K>& v = first % 2 == 0 ? lines.lines[first / 2].a : lines.lines[first / 2].b;

@@ -114,9 +114,11 @@ RC_GTEST_PROP(OverlappingBoxPairs, VisitsEveryOverlappingPairOnce, ()) {
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
   const double origin = *rc::gen::element(0.0, 1e9, -3.5e6, 1e-9);
   const double unit = *rc::gen::element(1.0, 1e-3, 0.1, 1e-9, 7.0);
-  // Past 4,096 boxes the columns are searched on several threads.
-  const std::size_t n = *rc::gen::weightedOneOf<std::size_t>({{6, rc::gen::inRange<std::size_t>(0, 300)},
-                                                              {1, rc::gen::inRange<std::size_t>(4096, 5000)}});
+  // Past 4,096 boxes the columns are searched on several threads; past 16,384 the boxes are
+  // listed, sorted and put in columns on several threads too.
+  const std::size_t n = *rc::gen::weightedOneOf<std::size_t>({{12, rc::gen::inRange<std::size_t>(0, 300)},
+                                                              {2, rc::gen::inRange<std::size_t>(4096, 5000)},
+                                                              {1, rc::gen::inRange<std::size_t>(16385, 17000)}});
   const int axis = *rc::gen::inRange(0, 3);
   const int threads = *rc::gen::inRange(1, 3);
   std::vector<Box> boxes;
@@ -148,6 +150,30 @@ RC_GTEST_PROP(OverlappingBoxPairs, VisitsEveryOverlappingPairOnce, ()) {
       if (overlap(boxes[i], boxes[j])) expected.emplace_back(i, j);
   std::sort(visited.begin(), visited.end());
   RC_ASSERT(visited == expected);
+}
+
+// resize_in_parallel (hlr/hidden_line/parallel.hpp) gives what resize gives: the elements kept,
+// the new ones value-initialized (default member initializers too), on one thread or two, from
+// empty and from a vector with elements, across the chunks it writes the new room in.
+TEST(ResizeInParallel, SameAsResize) {
+  struct Item {
+    double x = 1.5;
+    std::uint32_t id = 7;
+    bool operator==(const Item&) const = default;
+  };
+  for (const int threads : {1, 2})
+    for (const std::size_t from : {std::size_t(0), std::size_t(3), std::size_t(100000)})
+      for (const std::size_t to : {std::size_t(0), std::size_t(2), std::size_t(70000), std::size_t(300001)}) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        std::vector<Item> items(from, Item{2.5, 9}), expected = items;
+        std::vector<double> numbers(from, 4.0), expected_numbers = numbers;
+        hlr::hidden_line::resize_in_parallel(items, to);
+        hlr::hidden_line::resize_in_parallel(numbers, to);
+        expected.resize(to);
+        expected_numbers.resize(to);
+        EXPECT_TRUE(items == expected) << threads << " threads, " << from << " to " << to;
+        EXPECT_TRUE(numbers == expected_numbers) << threads << " threads, " << from << " to " << to;
+      }
 }
 
 }  // namespace

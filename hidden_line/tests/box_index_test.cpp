@@ -134,6 +134,21 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping_pairs(const std
   return pairs;
 }
 
+// The pairs overlapping_box_pairs visits (i < j, sorted), on `threads` threads.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> visited_pairs(const std::vector<Box3>& boxes, int axis, int threads) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> visited;
+  std::mutex mutex;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    hlr::hidden_line::detail::overlapping_box_pairs(boxes, axis, [&](const Box3& x, const Box3& y) {
+      const std::lock_guard lock(mutex);
+      visited.emplace_back(std::min(x.info(), y.info()), std::max(x.info(), y.info()));
+    });
+  }
+  std::sort(visited.begin(), visited.end());
+  return visited;
+}
+
 RC_GTEST_PROP(OverlappingBoxPairs, VisitsEveryOverlappingPairOnce, ()) {
   using Box = Box3;
   const double origin = *rc::gen::element(0.0, 1e9, -3.5e6, 1e-9);
@@ -154,17 +169,7 @@ RC_GTEST_PROP(OverlappingBoxPairs, VisitsEveryOverlappingPairOnce, ()) {
       b = Box(lo, hi, b.info());
     }
 
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> visited;
-  std::mutex mutex;
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    hlr::hidden_line::detail::overlapping_box_pairs(boxes, axis, [&](const Box& x, const Box& y) {
-      const std::lock_guard lock(mutex);
-      visited.emplace_back(std::min(x.info(), y.info()), std::max(x.info(), y.info()));
-    });
-  }
-  std::sort(visited.begin(), visited.end());
-  RC_ASSERT(visited == overlapping_pairs(boxes));
+  RC_ASSERT(visited_pairs(boxes, axis, threads) == overlapping_pairs(boxes));
 }
 
 // Past 16,384 boxes the boxes are listed, sorted and put in columns on several threads too. Drawn
@@ -186,15 +191,8 @@ TEST(OverlappingBoxPairs, ManyBoxesOnOneAndTwoThreads) {
     const auto expected = overlapping_pairs(boxes);
     for (const int threads : {1, 2})
       for (const int axis : {0, 2}) {
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> visited;
-        std::mutex mutex;
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        hlr::hidden_line::detail::overlapping_box_pairs(boxes, axis, [&](const Box3& x, const Box3& y) {
-          const std::lock_guard lock(mutex);
-          visited.emplace_back(std::min(x.info(), y.info()), std::max(x.info(), y.info()));
-        });
-        std::sort(visited.begin(), visited.end());
-        EXPECT_TRUE(visited == expected) << threads << " threads, axis " << axis << ", origin " << origin;
+        EXPECT_TRUE(visited_pairs(boxes, axis, threads) == expected)
+            << threads << " threads, axis " << axis << ", origin " << origin;
       }
   }
 }

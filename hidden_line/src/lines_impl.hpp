@@ -1036,27 +1036,20 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   // The other lines' ends: on the exact kernel, one image point per view point (an intersection
   // line's ends are shared along its curve, classify_lines), which halves them in a large drawing.
   if constexpr (G::exact_constructions) {
-    // Counted per chunk of lines, then written in place, on every thread.
-    constexpr std::size_t kChunk = 4096;
-    std::vector<std::size_t> chunk_start((n + kChunk - 1) / kChunk + 1, 0);
-    auto for_each_chunk = [&](auto&& each) {
-      parallel_chunks(chunk_start.size() - 1, 1, [&](const auto& range) {
-        for (std::size_t c = range.begin(); c != range.end(); ++c) each(c, c * kChunk, std::min(n, (c + 1) * kChunk));
-      });
-    };
-    for_each_chunk([&](std::size_t c, std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i != end; ++i) chunk_start[c + 1] += lines.lines[i].has_model_ends ? 0 : 2;
+    // Each line's place counted, then the ends written there, on every thread.
+    std::vector<std::uint32_t> place(n + 1, 0);  // and their count at place[n]
+    parallel_chunks(n, 4096, [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) place[i] = lines.lines[i].has_model_ends ? 0 : 2;
     });
-    std::partial_sum(chunk_start.begin(), chunk_start.end(), chunk_start.begin());
+    std::exclusive_scan(place.begin(), place.end(), place.begin(), 0u);
     std::vector<std::pair<std::array<std::uintptr_t, 2>, std::uint32_t>> shared_ends;  // ((x, y) reps, 2 line + end)
-    resize_in_parallel(shared_ends, chunk_start.back());
-    for_each_chunk([&](std::size_t c, std::size_t begin, std::size_t end) {
-      std::size_t at = chunk_start[c];
-      for (std::size_t i = begin; i != end; ++i) {
+    resize_in_parallel(shared_ends, place[n]);
+    parallel_chunks(n, 4096, [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
         const FeatureLine<K>& l = lines.lines[i];
         if (l.has_model_ends) continue;
-        shared_ends[at++] = {{std::uintptr_t(l.a.x.id()), std::uintptr_t(l.a.y.id())}, std::uint32_t(2 * i)};
-        shared_ends[at++] = {{std::uintptr_t(l.b.x.id()), std::uintptr_t(l.b.y.id())}, std::uint32_t(2 * i + 1)};
+        shared_ends[place[i]] = {{std::uintptr_t(l.a.x.id()), std::uintptr_t(l.a.y.id())}, std::uint32_t(2 * i)};
+        shared_ends[place[i] + 1] = {{std::uintptr_t(l.b.x.id()), std::uintptr_t(l.b.y.id())}, std::uint32_t(2 * i + 1)};
       }
     });
     detail::for_each_run_of_one_key(shared_ends, 4096, stop, [&](auto run) {

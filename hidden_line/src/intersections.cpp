@@ -141,6 +141,35 @@ auto shared_corner_sign(const Vec3& v, const Vec3& f1, const Vec3& f2, const Vec
   return CGAL::sign(num) * CGAL::sign(den);
 }
 
+// The first axis along which the line where two planes meet is not constant (each plane through
+// three input points, the planes not parallel): along that line, the lexicographic order of
+// points is the order of this coordinate. The line's direction is n x m, n and m the normals.
+int line_axis(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, const Vec3& q, const Vec3& r) {
+  for (int k = 0; k < 2; ++k) {
+    const CGAL::Sign s = filtered_sign([&](auto nt) {
+      using NT = typename decltype(nt)::type;
+      auto normal = [](const Vec3& a, const Vec3& b, const Vec3& c, int i) -> NT {
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        return (NT(b[j]) - NT(a[j])) * (NT(c[l]) - NT(a[l])) - (NT(b[l]) - NT(a[l])) * (NT(c[j]) - NT(a[j]));
+      };
+      const int j = (k + 1) % 3, l = (k + 2) % 3;
+      const NT d = normal(a, b, c, j) * normal(p, q, r, l) - normal(a, b, c, l) * normal(p, q, r, j);
+      return CGAL::sign(d);
+    });
+    if (s != CGAL::ZERO) return k;
+  }
+  return 2;
+}
+
+// The order of two points of a line along `axis`, an axis the line is not constant along
+// (line_axis): their lexicographic order. Points on such a line that share a coordinate of an
+// axis it is constant along (all of them, in CAD models' axis-aligned planes) need no exact
+// arithmetic to be told apart; copies of one lazy point are equal without any.
+CGAL::Comparison_result compare_on_line(const EK::Point_3& p, const EK::Point_3& q, int axis) {
+  if (p.id() == q.id()) return CGAL::EQUAL;
+  return axis == 0 ? CGAL::compare_x(p, q) : axis == 1 ? CGAL::compare_y(p, q) : CGAL::compare_z(p, q);
+}
+
 bool crosses_at_shared_corner(const Vec3& v, const Vec3& f1, const Vec3& f2, const Vec3& g1, const Vec3& g2) {
   return filtered_sign([&](auto nt) {
            return shared_corner_sign<typename decltype(nt)::type>(v, f1, f2, g1, g2);
@@ -161,12 +190,6 @@ double angle_between(const std::array<double, 3>& a, const std::array<double, 3>
 std::array<double, 3> rough_normal(const Vec3& p, const Vec3& q, const Vec3& r) {
   const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, v[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
   return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-}
-
-// compare_xyz, with copies of one lazy point equal without arithmetic (the crossings neighbouring
-// chords share).
-CGAL::Comparison_result compare_points(const EK::Point_3& a, const EK::Point_3& b) {
-  return a.id() == b.id() ? CGAL::EQUAL : CGAL::compare_xyz(a, b);
 }
 
 // Where the boundary of a triangle meets the plane of a face it straddles: two points, corners in
@@ -195,7 +218,7 @@ class TriangleChords {
   // collinear), known to have corners strictly on both sides of it; `plane_id` names the plane
   // (equal ids: one plane) for sharing crossings. The two ends in lexicographic order.
   std::array<End, 2> chord(std::uint32_t mesh, std::uint32_t face, const Vec3& a, const Vec3& b, const Vec3& c,
-                           std::uint64_t plane_id) {
+                           std::uint64_t plane_id, int axis) {
     const Mesh& m = meshes_[mesh];
     const auto& t = m.faces[face];
     const PlaneSide plane(a, b, c);
@@ -215,18 +238,18 @@ class TriangleChords {
       }
     }
     if (n != 2) throw std::logic_error("a triangle straddling a plane did not meet it in two points");
-    if (compare(out[1], out[0]) == CGAL::SMALLER) std::swap(out[0], out[1]);
+    if (compare(out[1], out[0], axis) == CGAL::SMALLER) std::swap(out[0], out[1]);
     return out;
   }
 
-  // The lexicographic order of two ends: on their intervals where they decide, else exactly.
-  CGAL::Comparison_result compare(const End& x, const End& y) {
-    for (int j = 0; j < 3; ++j) {
-      if (x.at[j].sup() < y.at[j].inf()) return CGAL::SMALLER;
-      if (x.at[j].inf() > y.at[j].sup()) return CGAL::LARGER;
-      if (!(x.at[j].is_point() && y.at[j].is_point())) return compare_points(point(x), point(y));
-    }
-    return CGAL::EQUAL;  // equal doubles
+  // The lexicographic order of two ends on one line, whose coordinate `axis` is not constant
+  // (line_axis): the order of that coordinate, on the intervals where they decide, else exactly.
+  CGAL::Comparison_result compare(const End& x, const End& y, int axis) {
+    const I &p = x.at[axis], &q = y.at[axis];
+    if (p.sup() < q.inf()) return CGAL::SMALLER;
+    if (p.inf() > q.sup()) return CGAL::LARGER;
+    if (p.is_point() && q.is_point()) return CGAL::EQUAL;  // equal doubles
+    return compare_on_line(point(x), point(y), axis);
   }
 
   // The end as an exact point (a lazy one for a crossing), one per chunk for each input vertex
@@ -391,15 +414,20 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     std::uint32_t face_a, face_b;
     double meeting_degrees;
   };
+  auto plane_corner = [&](const FaceRef& r, int k) -> const Vec3& {
+    return meshes[r.mesh].vertices[topo[r.mesh].plane_vertices[r.face][k]];
+  };
   auto rough_normal_of = [&](const FaceRef& r) {
-    const auto& pv = topo[r.mesh].plane_vertices[r.face];
-    const Mesh& m = meshes[r.mesh];
-    return rough_normal(m.vertices[pv[0]], m.vertices[pv[1]], m.vertices[pv[2]]);
+    return rough_normal(plane_corner(r, 0), plane_corner(r, 1), plane_corner(r, 2));
   };
   auto plane_of = [&](const FaceRef& r) {
-    const auto& pv = topo[r.mesh].plane_vertices[r.face];
-    const Mesh& m = meshes[r.mesh];
-    return EK::Plane_3(input_point<EK>(m, pv[0]), input_point<EK>(m, pv[1]), input_point<EK>(m, pv[2]));
+    auto point = [&](int k) { return EK::Point_3(plane_corner(r, k)[0], plane_corner(r, k)[1], plane_corner(r, k)[2]); };
+    return EK::Plane_3(point(0), point(1), point(2));
+  };
+  // line_axis of the line where the planes of two faces meet.
+  auto axis_of = [&](const FaceRef& f, const FaceRef& g) {
+    return line_axis(plane_corner(f, 0), plane_corner(f, 1), plane_corner(f, 2), plane_corner(g, 0), plane_corner(g, 1),
+                     plane_corner(g, 2));
   };
   // The pairs in fixed chunks, each with its own crossings (pairs are sorted, so the triangles
   // around one edge mostly fall in one chunk), gathered in chunk order: the same pieces in the
@@ -423,16 +451,16 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
         const double meeting_degrees = angle_between(rough_normal_of(f), rough_normal_of(g));
         if (meshes[f.mesh].faces[f.face].size() == 3 && meshes[g.mesh].faces[g.face].size() == 3) {
           // Two triangles: the open chords each cuts from the line of the two planes, overlapped.
+          const int axis = axis_of(f, g);
           auto chord = [&](const FaceRef& t, const FaceRef& other) {
-            const auto& pv = topo[other.mesh].plane_vertices[other.face];
-            const Mesh& om = meshes[other.mesh];
             const std::uint64_t plane_id = (std::uint64_t(other.mesh) << 32) | topo[other.mesh].coplanar_group[other.face];
-            return chords.chord(t.mesh, t.face, om.vertices[pv[0]], om.vertices[pv[1]], om.vertices[pv[2]], plane_id);
+            return chords.chord(t.mesh, t.face, plane_corner(other, 0), plane_corner(other, 1), plane_corner(other, 2),
+                                plane_id, axis);
           };
           const auto in_f = chord(f, g), in_g = chord(g, f);
-          const auto& lo = chords.compare(in_f[0], in_g[0]) == CGAL::LARGER ? in_f[0] : in_g[0];
-          const auto& hi = chords.compare(in_f[1], in_g[1]) == CGAL::SMALLER ? in_f[1] : in_g[1];
-          if (chords.compare(lo, hi) == CGAL::SMALLER)
+          const auto& lo = chords.compare(in_f[0], in_g[0], axis) == CGAL::LARGER ? in_f[0] : in_g[0];
+          const auto& hi = chords.compare(in_f[1], in_g[1], axis) == CGAL::SMALLER ? in_f[1] : in_g[1];
+          if (chords.compare(lo, hi, axis) == CGAL::SMALLER)
             out.push_back({key, {chords.point(lo), chords.point(hi), f.face, g.face, meeting_degrees}});
           continue;
         }
@@ -483,14 +511,16 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
         const GroupPair& key = by_group[run_starts[r]].first;
         list.clear();
         for (std::size_t k = run_starts[r]; k < run_starts[r + 1]; ++k) list.push_back(by_group[k].second);
-        std::sort(list.begin(), list.end(),
-                  [](const Piece* x, const Piece* y) { return compare_points(x->a, y->a) == CGAL::SMALLER; });
+        // All on the line where the two groups' planes meet.
+        const int axis = axis_of({std::get<0>(key), list.front()->face_a}, {std::get<2>(key), list.front()->face_b});
+        auto compare = [axis](const EK::Point_3& p, const EK::Point_3& q) { return compare_on_line(p, q, axis); };
+        std::sort(list.begin(), list.end(), [&](const Piece* x, const Piece* y) { return compare(x->a, y->a) == CGAL::SMALLER; });
         for (std::size_t k = 0; k < list.size();) {
           const Piece& first = *list[k];
           IntersectionSegment s{first.a,          first.b,          std::get<0>(key),      std::get<2>(key),
                                 {first.face_a}, {first.face_b}, first.meeting_degrees};
-          for (++k; k < list.size() && compare_points(list[k]->a, s.b) != CGAL::LARGER; ++k) {
-            if (compare_points(list[k]->b, s.b) == CGAL::LARGER) s.b = list[k]->b;
+          for (++k; k < list.size() && compare(list[k]->a, s.b) != CGAL::LARGER; ++k) {
+            if (compare(list[k]->b, s.b) == CGAL::LARGER) s.b = list[k]->b;
             s.faces_a.push_back(list[k]->face_a);
             s.faces_b.push_back(list[k]->face_b);
           }

@@ -1,5 +1,6 @@
-// component_sides (hlr/kernel/mesh_edges.hpp): components, closedness and the exact sign of the
-// enclosed volume; coplanar_groups.
+// edge_uses, component_sides (hlr/kernel/mesh_edges.hpp): the edge uses sorted (here rather than
+// in the header, which nearly every file includes), components, closedness and the exact sign of
+// the enclosed volume; coplanar_groups.
 #include <hlr/kernel/mesh_edges.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -40,6 +41,39 @@ int enclosed_volume_sign(const Mesh& mesh, const std::vector<std::uint32_t>& fac
 }
 
 }  // namespace
+
+std::vector<EdgeUse> edge_uses(const Mesh& mesh) {
+  std::vector<EdgeUse> uses;
+  std::size_t corners = 0;
+  for (const auto& face : mesh.faces) corners += face.size();
+  uses.reserve(corners);
+  std::uint32_t vertices = 0;
+  for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
+    const auto& face = mesh.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
+      // The per-face bits cover the first 8 (fan) and 4 (source) edges: no shift past them.
+      const bool fan = !mesh.fan_edges.empty() && i < 8 && (mesh.fan_edges[f] >> i & 1u);
+      const std::uint8_t bits = mesh.source_edges.empty() || i >= 4 ? 0 : mesh.source_edges[f] >> i;
+      const std::uint8_t source = (bits & 1u) ? std::uint8_t(1u | ((bits >> 4 & 1u) << 1)) : 0;
+      uses.push_back({edge_key(a, b), f, a < b, fan, source});
+      vertices = std::max(vertices, std::max(a, b) + 1);
+    }
+  }
+  // Made in face order, so two stable counting sorts, by the higher vertex and then by the lower,
+  // order them by (key, face) in linear time.
+  std::vector<EdgeUse> by_high(uses.size());
+  std::vector<std::uint32_t> start(std::size_t(vertices) + 1);
+  auto counting_sort = [&](const std::vector<EdgeUse>& from, std::vector<EdgeUse>& to, auto vertex_of) {
+    std::fill(start.begin(), start.end(), 0);
+    for (const EdgeUse& u : from) ++start[vertex_of(u.key) + 1];
+    for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+    for (const EdgeUse& u : from) to[start[vertex_of(u.key)]++] = u;
+  };
+  counting_sort(uses, by_high, edge_high);
+  counting_sort(by_high, uses, edge_low);
+  return uses;
+}
 
 ComponentSides component_sides(const Mesh& mesh, const std::vector<EdgeUse>& uses) {
   const std::size_t nf = mesh.faces.size();

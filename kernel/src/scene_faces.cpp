@@ -12,19 +12,35 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <set>
-#include <unordered_map>
 #include <utility>
 
 namespace hlr::scene_detail {
 
 std::vector<std::uint32_t> weld_vertices(const std::vector<std::array<double, 3>>& vertices) {
-  std::vector<std::uint32_t> canonical(vertices.size());
-  std::unordered_map<std::array<double, 3>, std::uint32_t, CoordinateHash> first;
-  first.reserve(vertices.size());
-  for (std::uint32_t v = 0; v < vertices.size(); ++v)
-    canonical[v] = first.try_emplace(coordinate_key(vertices[v]), v).first->second;
+  // Sorted by coordinates and then by index, equal coordinates are a run that starts with the
+  // first of them: a sort on every thread rather than a hash table filled on one (1M vertices:
+  // 0.18 s in a table).
+  struct Keyed {
+    std::array<double, 3> at;
+    std::uint32_t v;
+  };
+  const std::size_t n = vertices.size();
+  std::vector<Keyed> keyed(n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384), [&](const auto& range) {
+    for (std::size_t v = range.begin(); v != range.end(); ++v) keyed[v] = {coordinate_key(vertices[v]), std::uint32_t(v)};
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) { return a.at < b.at || (a.at == b.at && a.v < b.v); });
+  std::vector<std::uint32_t> canonical(n);
+  for (std::size_t i = 0, first = 0; i < n; ++i) {
+    if (keyed[i].at != keyed[first].at) first = i;
+    canonical[keyed[i].v] = keyed[first].v;
+  }
   return canonical;
 }
 

@@ -393,12 +393,15 @@ class Classifier {
     // Orthographic views on the exact kernel decide depths in model space, on the input doubles.
     if constexpr (G::exact_constructions)
       if (!frame.perspective()) {
-        model_turns_.reserve(sources.polygons.size());
-        for (const auto& sp : sources.polygons) {
-          const auto& v = meshes[sp.mesh].vertices;
-          const ModelPlane plane(v[sp.plane_points[0]], v[sp.plane_points[1]], v[sp.plane_points[2]], frame.view().direction);
-          model_turns_.push_back(static_cast<std::int8_t>(plane.turn()));
-        }
+        model_turns_.resize(sources.polygons.size());
+        parallel_chunks(sources.polygons.size(), 4096, [&](const auto& range) {
+          for (std::size_t s = range.begin(); s != range.end(); ++s) {
+            const auto& sp = sources.polygons[s];
+            const auto& v = meshes[sp.mesh].vertices;
+            const ModelPlane plane(v[sp.plane_points[0]], v[sp.plane_points[1]], v[sp.plane_points[2]], frame.view().direction);
+            model_turns_[s] = static_cast<std::int8_t>(plane.turn());
+          }
+        });
       }
     nearest_.resize(covers_.size());
     parallel_chunks(covers_.size(), 4096, [&](const auto& range) {
@@ -816,7 +819,6 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
   };
 
   tbb::enumerable_thread_specific<typename Classifier<K>::Scratch> scratch;
-  std::size_t polls = 0;
   try {
     // Every line's room taken at once: a vector grown by doubling keeps up to half of it unused
     // until the drawing is made, where the run's memory peaks.
@@ -829,26 +831,47 @@ LineSet<K> classify_against(const std::vector<Mesh>& meshes, const ViewFrame<K>&
     // then finds a run of free pages before the classifier's arrays split them, instead of
     // growing the heap by its size (1M faces on 2 threads: 58 MB less peak).
     classifier.emplace(meshes, frame, sources, std::move(covers));
+    // Each mesh's edges made lines in place on every thread: where each goes (an edge wholly
+    // behind the near plane, in perspective, is not drawn) and how many own sources it has,
+    // counted, then placed by a scan.
     for (std::uint32_t m = 0; m < meshes.size(); ++m) {
       const NearCut<K>& cut = sources.near_cuts[m];
-      for (const FeatureEdge& edge : edges[m]) {
-        options.stop.check_every(polls, 1024);
-        // In perspective, the part in front of the near plane; an edge wholly behind it is not drawn.
-        const auto ends = cut.edge_ends(edge.v0, edge.v1);
-        if (!ends) continue;
-        FeatureLine<K> line;
-        line.a = classifier->view_point(m, (*ends)[0]);
-        line.b = classifier->view_point(m, (*ends)[1]);
-        line.kind = edge.kind;
-        line.mesh = m;
-        line.v0 = edge.v0;
-        line.v1 = edge.v1;
-        line.has_model_ends = (*ends)[0] == edge.v0 && (*ends)[1] == edge.v1;
-        out.lines.push_back(std::move(line));
-        for_each_own_source({{m, &edge.faces}}, [&](std::int32_t s) { own.push_back(s); });
-        std::sort(own.begin() + own_start.back(), own.end());
-        own_start.push_back(std::uint32_t(own.size()));
-      }
+      const std::vector<FeatureEdge>& mesh_edges = edges[m];
+      const std::size_t count = mesh_edges.size();
+      std::vector<std::uint32_t> line_at(count + 1), own_at(count + 1);  // counts, then places
+      parallel_chunks(count, 4096, [&](const auto& range) {
+        options.stop.check();
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          line_at[i] = cut.edge_ends(mesh_edges[i].v0, mesh_edges[i].v1) ? 1 : 0;
+          own_at[i] = 0;
+          if (line_at[i]) for_each_own_source({{m, &mesh_edges[i].faces}}, [&](std::int32_t) { ++own_at[i]; });
+        }
+      });
+      std::exclusive_scan(line_at.begin(), line_at.end(), line_at.begin(), std::uint32_t(out.lines.size()));
+      std::exclusive_scan(own_at.begin(), own_at.end(), own_at.begin(), std::uint32_t(own.size()));
+      resize_in_parallel(out.lines, line_at[count]);
+      own.resize(own_at[count]);
+      own_start.resize(line_at[count] + 1);
+      parallel_chunks(count, 4096, [&](const auto& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          if (line_at[i + 1] == line_at[i]) continue;
+          const FeatureEdge& edge = mesh_edges[i];
+          // In perspective, the part in front of the near plane.
+          const auto ends = *cut.edge_ends(edge.v0, edge.v1);
+          FeatureLine<K>& line = out.lines[line_at[i]];
+          line.a = classifier->view_point(m, ends[0]);
+          line.b = classifier->view_point(m, ends[1]);
+          line.kind = edge.kind;
+          line.mesh = m;
+          line.v0 = edge.v0;
+          line.v1 = edge.v1;
+          line.has_model_ends = ends[0] == edge.v0 && ends[1] == edge.v1;
+          auto at = own.begin() + own_at[i];
+          for_each_own_source({{m, &edge.faces}}, [&](std::int32_t s) { *at++ = s; });
+          std::sort(own.begin() + own_at[i], at);
+          own_start[line_at[i] + 1] = own_at[i + 1];
+        }
+      });
     }
     std::vector<std::vector<FeatureEdge>>().swap(edges);  // each is its line now
     const std::size_t first_intersection = out.lines.size();

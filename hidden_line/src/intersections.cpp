@@ -303,20 +303,23 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
 
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
   std::vector<FaceRef> faces;
-  std::vector<Box> boxes;
-  for (std::uint32_t mi = 0; mi < meshes.size(); ++mi) {
-    for (std::uint32_t f = 0; f < meshes[mi].faces.size(); ++f) {
+  std::size_t face_count = 0;
+  for (const Mesh& m : meshes) face_count += m.faces.size();
+  faces.reserve(face_count);
+  for (std::uint32_t mi = 0; mi < meshes.size(); ++mi)
+    for (std::uint32_t f = 0; f < meshes[mi].faces.size(); ++f) faces.push_back({mi, f});
+  std::vector<Box> boxes(faces.size());
+  parallel_chunks(faces.size(), 4096, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const Mesh& m = meshes[faces[i].mesh];
+      const auto& corners = m.faces[faces[i].face];
       double lo[3], hi[3];
-      for (int k = 0; k < 3; ++k) lo[k] = hi[k] = meshes[mi].vertices[meshes[mi].faces[f][0]][k];
-      for (std::uint32_t v : meshes[mi].faces[f])
-        for (int k = 0; k < 3; ++k) {
-          lo[k] = std::min(lo[k], meshes[mi].vertices[v][k]);
-          hi[k] = std::max(hi[k], meshes[mi].vertices[v][k]);
-        }
-      boxes.emplace_back(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), faces.size());
-      faces.push_back({mi, f});
+      for (int k = 0; k < 3; ++k) lo[k] = hi[k] = m.vertices[corners[0]][k];
+      for (std::uint32_t v : corners)
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.vertices[v][k]), hi[k] = std::max(hi[k], m.vertices[v][k]);
+      boxes[i] = Box(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), i);
     }
-  }
+  });
 
   std::vector<FaceRecord> records(faces.size());
   parallel_chunks(faces.size(), 4096, [&](const auto& range) {

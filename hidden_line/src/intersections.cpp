@@ -424,7 +424,10 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     return rough_normal(plane_corner(r, 0), plane_corner(r, 1), plane_corner(r, 2));
   };
   auto plane_of = [&](const FaceRef& r) {
-    auto point = [&](int k) { return EK::Point_3(plane_corner(r, k)[0], plane_corner(r, k)[1], plane_corner(r, k)[2]); };
+    auto point = [&](int k) {
+      const Vec3& c = plane_corner(r, k);
+      return EK::Point_3(c[0], c[1], c[2]);
+    };
     return EK::Plane_3(point(0), point(1), point(2));
   };
   // line_axis of the line where the planes of two faces meet.

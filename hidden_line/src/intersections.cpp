@@ -102,16 +102,18 @@ struct FaceRecord {
   bool triangle;
 };
 
-// Whether triangle g has corners strictly on both sides of f_plane, the plane of triangle f;
-// corners g shares with f (same mesh, same vertex) lie in that plane and are skipped.
-bool straddles(const PlaneSide& f_plane, const FaceRecord& g, const FaceRecord& f) {
+// Whether triangle g has corners strictly on both sides of f_plane, the plane of triangle f, with
+// the side of each corner in `side`; corners g shares with f (same mesh, same vertex) lie in that
+// plane (side 0) and are not tested.
+bool straddles(const PlaneSide& f_plane, const FaceRecord& g, const FaceRecord& f, std::array<int, 3>& side) {
   const bool same_mesh = f.mesh == g.mesh;
   bool below = false, above = false;
   for (int k = 0; k < 3; ++k) {
-    if (same_mesh && (g.vertex[k] == f.vertex[0] || g.vertex[k] == f.vertex[1] || g.vertex[k] == f.vertex[2])) continue;
-    const int o = f_plane(g.corner[k]);
-    below |= o < 0;
-    above |= o > 0;
+    const bool shared =
+        same_mesh && (g.vertex[k] == f.vertex[0] || g.vertex[k] == f.vertex[1] || g.vertex[k] == f.vertex[2]);
+    side[k] = shared ? 0 : f_plane(g.corner[k]);
+    below |= side[k] < 0;
+    above |= side[k] > 0;
   }
   return below && above;
 }
@@ -357,8 +359,9 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
         (fc[0] == gc[0] || fc[0] == gc[1] || fc[0] == gc[2]) + (fc[1] == gc[0] || fc[1] == gc[1] || fc[1] == gc[2]) +
                 (fc[2] == gc[0] || fc[2] == gc[1] || fc[2] == gc[2]) >= 2)
       return false;
-    if (!straddles(PlaneSide(f.corner[0], f.corner[1], f.corner[2]), g, f) ||
-        !straddles(PlaneSide(g.corner[0], g.corner[1], g.corner[2]), f, g))
+    std::array<int, 3> f_side, g_side;  // f's corners against g's plane, g's against f's
+    if (!straddles(PlaneSide(f.corner[0], f.corner[1], f.corner[2]), g, f, g_side) ||
+        !straddles(PlaneSide(g.corner[0], g.corner[1], g.corner[2]), f, g, f_side))
       return false;
     // The exact overlap test (predicates on the input points only) spares the constructions for
     // the many curved-surface neighbours that straddle each other's planes but do not meet.
@@ -371,6 +374,8 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
             return crosses_at_shared_corner(f.corner[p], f.corner[(p + 1) % 3], f.corner[(p + 2) % 3],
                                             g.corner[(q + 1) % 3], g.corner[(q + 2) % 3]);
     }
+    auto off_plane = [](const std::array<int, 3>& side) { return side[0] != 0 && side[1] != 0 && side[2] != 0; };
+    if (off_plane(f_side) && off_plane(g_side)) return triangles_meet(f.corner, f_side, g.corner, g_side);
     return CGAL::do_intersect(IK::Triangle_3(ipoint(f, 0), ipoint(f, 1), ipoint(f, 2)),
                               IK::Triangle_3(ipoint(g, 0), ipoint(g, 1), ipoint(g, 2)));
   };

@@ -248,6 +248,39 @@ TEST(ExactKernel, PlaneSideIsTheExactOrientation) {
   EXPECT_GT(ordinary_decided, ordinary * 99 / 100) << "the bound must settle ordinary cases";
 }
 
+// triangles_meet against CGAL::do_intersect, on pairs of triangles each with corners strictly on
+// both sides of the other's plane, with coordinates random, on a coarse grid (where the segments
+// on the planes' line touch end to end: the final orientations' zeros), far from the origin and of
+// mixed magnitude. The second triangle is drawn near the first, so that about half the pairs meet.
+TEST(ExactKernel, TrianglesMeetAsCgalSays) {
+  using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::mt19937_64 random(20261207);
+  std::size_t tested = 0, met = 0;
+  for (int i = 0; i < 40000; ++i) {
+    const int mode = i % 4;
+    auto point = [&] { return Vec3{hard_value(random, mode), hard_value(random, mode), hard_value(random, mode)}; };
+    std::array<Vec3, 3> p{point(), point(), point()}, q{point(), point(), point()};
+    if (i % 8 < 4)  // q moved to p's centre where that is exact (the grids)
+      for (Vec3& v : q)
+        for (int k = 0; k < 3; ++k) v[k] = (v[k] - p[0][k]) + (p[1][k] + p[2][k]) / 2;
+    auto ik = [](const Vec3& v) { return IK::Point_3(v[0], v[1], v[2]); };
+    if (CGAL::collinear(ik(p[0]), ik(p[1]), ik(p[2])) || CGAL::collinear(ik(q[0]), ik(q[1]), ik(q[2]))) continue;
+    const PlaneSide p_plane(p[0], p[1], p[2]), q_plane(q[0], q[1], q[2]);
+    std::array<int, 3> p_side, q_side;
+    for (int k = 0; k < 3; ++k) p_side[k] = q_plane(p[k]), q_side[k] = p_plane(q[k]);
+    auto straddles = [](const std::array<int, 3>& side) {
+      return side[0] * side[1] * side[2] != 0 && !(side[0] == side[1] && side[1] == side[2]);
+    };
+    if (!straddles(p_side) || !straddles(q_side)) continue;
+    const bool want = CGAL::do_intersect(IK::Triangle_3(ik(p[0]), ik(p[1]), ik(p[2])), IK::Triangle_3(ik(q[0]), ik(q[1]), ik(q[2])));
+    ASSERT_EQ(triangles_meet(p, p_side, q, q_side), want) << i;
+    ++tested, met += want;
+  }
+  EXPECT_GT(tested, 4000u);
+  EXPECT_GT(met, tested / 5);
+  EXPECT_LT(met, tested * 4 / 5);
+}
+
 // orientation_of_doubles (the clipper's pair test): a decided orientation must be the exact one
 // (in rationals) for points on a line (exact zeros on the grids), an ulp off it, and ordinary ones,
 // with coordinates random, on a coarse grid, far from the origin, of mixed magnitude, and near the

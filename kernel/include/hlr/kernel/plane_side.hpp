@@ -10,6 +10,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <array>
 #include <cmath>
 
 namespace hlr {
@@ -64,5 +65,30 @@ class PlaneSide {
   Vec3 a_, b_, c_;
   double normal_[3], weight_[3];
 };
+
+// Whether the closed triangles p and q meet, given the side of each one's corners against the
+// other's plane (PlaneSide: p_side[i] the side of p[i] against q's plane), every side non-zero and
+// each triangle with corners on both sides: the case of nearly every pair the penetration search
+// tests. It is Guigue and Devillers' test as CGAL::do_intersect(Triangle_3, Triangle_3) makes it
+// after the same six orientations, which it would compute again: each triangle meets the line where
+// the planes meet in a segment, from its edges around its one corner alone on its side, and the two
+// segments overlap exactly when two more orientations of input points say so.
+inline bool triangles_meet(const std::array<Vec3, 3>& p, const std::array<int, 3>& p_side,
+                           const std::array<Vec3, 3>& q, const std::array<int, 3>& q_side) {
+  using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
+  // The corners (s_min, t_min, s_max, t_max) that CGAL names: around the lone corner x, with its
+  // neighbours in the triangle's order, (x, next, previous, x) when x is alone on the positive
+  // side, (previous, x, x, next) when alone on the negative side.
+  auto ends = [](const std::array<Vec3, 3>& t, const std::array<int, 3>& side) {
+    const int x = side[0] == side[1] ? 2 : side[0] == side[2] ? 1 : 0;
+    const int next = (x + 1) % 3, previous = (x + 2) % 3;
+    auto point = [&](int k) { return IK::Point_3(t[k][0], t[k][1], t[k][2]); };
+    return side[x] > 0 ? std::array{point(x), point(next), point(previous), point(x)}
+                       : std::array{point(previous), point(x), point(x), point(next)};
+  };
+  const auto e1 = ends(p, p_side), e2 = ends(q, q_side);
+  return CGAL::orientation(e1[0], e1[1], e2[0], e2[1]) != CGAL::POSITIVE &&
+         CGAL::orientation(e1[2], e1[3], e2[3], e2[2]) != CGAL::POSITIVE;
+}
 
 }  // namespace hlr

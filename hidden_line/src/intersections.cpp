@@ -495,14 +495,26 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
       }
     }
   });
-  // The pieces of each pair of groups, in chunk order: a stable sort of references by key.
+  // The pieces of each pair of groups, in chunk order: references sorted by key, then by place
+  // (a stable sort, on every thread).
   std::vector<std::pair<GroupPair, const Piece*>> by_group;
   std::size_t pieces = 0;
   for (const auto& chunk : chunk_pieces) pieces += chunk.size();
   by_group.reserve(pieces);
   for (const auto& chunk : chunk_pieces)
     for (const auto& [key, piece] : chunk) by_group.emplace_back(key, &piece);
-  std::stable_sort(by_group.begin(), by_group.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  {
+    std::vector<std::pair<GroupPair, std::uint32_t>> keyed(by_group.size());
+    parallel_chunks(by_group.size(), 16384, [&](const auto& range) {
+      for (std::size_t k = range.begin(); k != range.end(); ++k) keyed[k] = {by_group[k].first, std::uint32_t(k)};
+    });
+    tbb::parallel_sort(keyed.begin(), keyed.end());
+    std::vector<std::pair<GroupPair, const Piece*>> sorted(by_group.size());
+    parallel_chunks(keyed.size(), 16384, [&](const auto& range) {
+      for (std::size_t k = range.begin(); k != range.end(); ++k) sorted[k] = by_group[keyed[k].second];
+    });
+    by_group.swap(sorted);
+  }
   std::vector<std::size_t> run_starts;  // where each pair of groups begins in by_group, and its end
   for (std::size_t k = 0; k < by_group.size(); ++k)
     if (k == 0 || by_group[k].first != by_group[k - 1].first) run_starts.push_back(k);

@@ -28,6 +28,7 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -354,24 +355,33 @@ class Classifier {
       for (std::size_t s = range.begin(); s != range.end(); ++s)
         for (std::uint32_t f : sources.polygons[s].faces) source_of_face_[sources.polygons[s].mesh][f] = std::int32_t(s);
     });
-    // The sources through each mesh vertex: their planes contain it exactly. Counted, then filled;
-    // sources come in order, so each vertex's list is sorted.
+    // The sources through each mesh vertex: their planes contain it exactly. Counted, placed by a
+    // scan and filled on every thread, each list then sorted. Each thread remembers the last
+    // source it met at each vertex (`mark`), so that a vertex of several faces of one source
+    // counts once: the counting marks s, the filling ~s.
     vertex_sources_.resize(meshes.size());
-    std::vector<std::vector<std::int32_t>> last(meshes.size());
-    auto each_vertex_source = [&](auto visit) {  // visit(mesh, vertex, source), each triple once
-      for (std::size_t m = 0; m < meshes.size(); ++m) last[m].assign(meshes[m].vertices.size(), -1);
-      for (std::size_t s = 0; s < sources.polygons.size(); ++s) {
-        const auto& sp = sources.polygons[s];
-        for (std::uint32_t f : sp.faces)
-          for (std::uint32_t v : meshes[sp.mesh].faces[f])
-            if (last[sp.mesh][v] != std::int32_t(s)) {
-              last[sp.mesh][v] = std::int32_t(s);
-              visit(sp.mesh, v, std::int32_t(s));
-            }
-      }
+    tbb::enumerable_thread_specific<std::vector<std::vector<std::int32_t>>> last;
+    auto each_vertex_source = [&](auto mark, auto visit) {  // visit(mesh, vertex, source), each triple once
+      parallel_chunks(sources.polygons.size(), 1024, [&](const auto& range) {
+        auto& seen = last.local();
+        if (seen.empty())
+          for (const Mesh& mesh : meshes) seen.emplace_back(mesh.vertices.size(), -1);
+        for (std::size_t s = range.begin(); s != range.end(); ++s) {
+          const auto& sp = sources.polygons[s];
+          const std::int32_t m = mark(std::int32_t(s));
+          for (std::uint32_t f : sp.faces)
+            for (std::uint32_t v : meshes[sp.mesh].faces[f])
+              if (seen[sp.mesh][v] != m) {
+                seen[sp.mesh][v] = m;
+                visit(sp.mesh, v, std::int32_t(s));
+              }
+        }
+      });
     };
     for (std::size_t m = 0; m < meshes.size(); ++m) vertex_sources_[m].start.assign(meshes[m].vertices.size() + 1, 0);
-    each_vertex_source([&](std::uint32_t m, std::uint32_t v, std::int32_t) { ++vertex_sources_[m].start[v + 1]; });
+    each_vertex_source([](std::int32_t s) { return s; }, [&](std::uint32_t m, std::uint32_t v, std::int32_t) {
+      std::atomic_ref(vertex_sources_[m].start[v + 1]).fetch_add(1, std::memory_order_relaxed);
+    });
     std::vector<std::vector<std::uint32_t>> next(meshes.size());
     for (std::size_t m = 0; m < meshes.size(); ++m) {
       auto& vs = vertex_sources_[m];
@@ -379,7 +389,14 @@ class Classifier {
       vs.sources.resize(vs.start.back());
       next[m].assign(vs.start.begin(), vs.start.end() - 1);
     }
-    each_vertex_source([&](std::uint32_t m, std::uint32_t v, std::int32_t s) { vertex_sources_[m].sources[next[m][v]++] = s; });
+    each_vertex_source([](std::int32_t s) { return ~s; }, [&](std::uint32_t m, std::uint32_t v, std::int32_t s) {
+      vertex_sources_[m].sources[std::atomic_ref(next[m][v]).fetch_add(1, std::memory_order_relaxed)] = s;
+    });
+    for (auto& vs : vertex_sources_)
+      parallel_chunks(vs.start.size() - 1, 16384, [&](const auto& range) {
+        for (std::size_t v = range.begin(); v != range.end(); ++v)
+          std::sort(vs.sources.begin() + vs.start[v], vs.sources.begin() + vs.start[v + 1]);
+      });
     hole_box_start_.assign(covers_.size() + 1, 0);
     for (std::uint32_t i = 0; i < covers_.size(); ++i)
       hole_box_start_[i + 1] = hole_box_start_[i] + std::uint32_t(covers_[i].polygon->holes.size());

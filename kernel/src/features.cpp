@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <array>
-#include <iterator>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -82,7 +81,8 @@ class FaceNormals {
   // Facing: the sign of n·t with t toward the viewer: −d in an orthographic view; in a
   // perspective one e − p for a corner p, so that the face faces the viewer exactly when the eye
   // lies on its front side. Faces in parallel chunks, each on its own.
-  FaceNormals(const Mesh& mesh, const View& view) : mesh_(mesh), approx_(mesh.faces.size()), facing_(mesh.faces.size()) {
+  FaceNormals(const Mesh& mesh, const View& view)
+      : mesh_(mesh), approx_((mesh.faces.size() + kBlock - 1) / kBlock), facing_(mesh.faces.size()) {
     const double toward_viewer[3] = {-view.direction[0], -view.direction[1], -view.direction[2]};
     auto toward = [&]<class NT>(std::size_t f, NT) -> std::array<NT, 3> {
       if (!view.eye) return {NT(toward_viewer[0]), NT(toward_viewer[1]), NT(toward_viewer[2])};
@@ -90,13 +90,15 @@ class FaceNormals {
       const Vec3& e = *view.eye;
       return {NT(e[0]) - NT(p[0]), NT(e[1]) - NT(p[1]), NT(e[2]) - NT(p[2])};
     };
-    in_chunks(mesh.faces.size(), 4096, [&](std::size_t begin, std::size_t end) {
+    in_chunks(mesh.faces.size(), kBlock, [&](std::size_t begin, std::size_t end) {
       std::vector<std::size_t> undecided;
       {
         CGAL::Protect_FPU_rounding<true> protect;
+        auto& block = approx_[begin / kBlock];
+        block.reserve(end - begin);
         for (std::size_t f = begin; f < end; ++f) {
-          approx_[f] = face_normal<IA>(mesh, mesh.faces[f]);
-          const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(dot(approx_[f], toward(f, IA())));
+          block.push_back(face_normal<IA>(mesh, mesh.faces[f]));
+          const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(dot(block.back(), toward(f, IA())));
           if (CGAL::is_certain(sign)) facing_[f] = CGAL::get_certain(sign);
           else undecided.push_back(f);
         }
@@ -113,9 +115,9 @@ class FaceNormals {
   bool crease(std::size_t f, std::size_t g, int flip, double cos_threshold) const {
     {
       CGAL::Protect_FPU_rounding<true> protect;
-      std::array<IA, 3> ng = approx_[g];
+      std::array<IA, 3> ng = approx(g);
       if (flip < 0) ng = {-ng[0], -ng[1], -ng[2]};
-      const CGAL::Uncertain<bool> above = angle_above(approx_[f], ng, cos_threshold);
+      const CGAL::Uncertain<bool> above = angle_above(approx(f), ng, cos_threshold);
       if (CGAL::is_certain(above)) return CGAL::get_certain(above);
     }
     std::array<FT, 3> ng = exact(g);
@@ -126,8 +128,13 @@ class FaceNormals {
  private:
   std::array<FT, 3> exact(std::size_t f) const { return face_normal<FT>(mesh_, mesh_.faces[f]); }
 
+  const std::array<IA, 3>& approx(std::size_t f) const { return approx_[f / kBlock][f % kBlock]; }
+
+  // The normals in intervals, in blocks of kBlock faces, each made by the thread that fills it: a
+  // large mesh's (48 MB at 1M faces) would otherwise be made on one thread before the rest.
+  static constexpr std::size_t kBlock = 4096;
   const Mesh& mesh_;
-  std::vector<std::array<IA, 3>> approx_;
+  std::vector<std::vector<std::array<IA, 3>>> approx_;
   std::vector<int> facing_;
 };
 
@@ -355,10 +362,16 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
       if (auto edge = feature(first, last)) found[begin / kUses].push_back(std::move(*edge));
     });
   });
-  std::size_t count = 0;
-  for (const auto& edges : found) count += edges.size();
-  out.reserve(count);
-  for (auto& edges : found) std::move(edges.begin(), edges.end(), std::back_inserter(out));
+  // Joined where each chunk's edges begin, on every thread: a large mesh has a million edges to move.
+  std::vector<std::size_t> at(found.size() + 1, 0);
+  for (std::size_t k = 0; k < found.size(); ++k) at[k + 1] = at[k] + found[k].size();
+  out.resize(at.back());
+  in_chunks(found.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      std::move(found[k].begin(), found[k].end(), out.begin() + std::ptrdiff_t(at[k]));
+      std::vector<FeatureEdge>().swap(found[k]);
+    }
+  });
   return out;
 }
 

@@ -527,6 +527,96 @@ TEST(SceneImport, InwardComponentsAreAWarning) {
                                                               "seen from outside): drawn as turned outward"}));
 }
 
+// An OFF file of several megabytes is read in pieces side by side (scene_off.cpp): what it gives,
+// its errors and their line numbers, must be what reading it line by line gives. A triangulated
+// grid with comments, blank lines, CRLF line ends and face colors, read whole, then with errors
+// planted in later pieces (the first in the file must be reported), with content after the last
+// face, and with more faces promised than it has.
+TEST(SceneImport, LargeOffFileIsReadAsLineByLine) {
+  constexpr std::uint32_t n = 300;  // n x n vertices, 2 (n - 1)^2 triangles: about 4 MB of text
+  std::vector<std::string> lines{"OFF", ""};
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<Face> faces;
+  std::vector<std::size_t> vertex_line, face_line;  // indices into `lines`
+  auto decorate = [&](std::size_t k) {  // comments and blank lines here and there
+    if (k % 997 == 3) lines.push_back("# a comment line");
+    if (k % 1499 == 5) lines.push_back("   ");
+  };
+  for (std::uint32_t y = 0; y < n; ++y)
+    for (std::uint32_t x = 0; x < n; ++x) {
+      decorate(vertices.size());
+      vertices.push_back({x * 0.25, y * 0.5, (x * 7 + y * 3) % 5 * 0.125});
+      vertex_line.push_back(lines.size());
+      lines.push_back(std::to_string(vertices.back()[0]) + " " + std::to_string(vertices.back()[1]) + " " +
+                      std::to_string(vertices.back()[2]) + (x % 13 == 0 ? " # trailing comment\r" : ""));
+    }
+  std::vector<std::string> color;  // each face's, "" for none
+  for (std::uint32_t y = 0; y + 1 < n; ++y)
+    for (std::uint32_t x = 0; x + 1 < n; ++x) {
+      const std::uint32_t v = y * n + x;
+      for (const Face& f : {Face{v, v + 1, v + n + 1}, Face{v, v + n + 1, v + n}}) {
+        decorate(faces.size());
+        const std::size_t k = faces.size();
+        faces.push_back(f);
+        color.push_back(k % 7 == 0 ? "1 0 0" : k % 11 == 0 ? "0 0 1.0" : "");
+        face_line.push_back(lines.size());
+        lines.push_back("3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) +
+                        (color.back().empty() ? "" : " " + color.back()));
+      }
+    }
+  auto text = [&](std::size_t promised_faces, const std::vector<std::string>& body) {
+    std::string out;
+    for (std::size_t i = 0; i < body.size(); ++i)
+      out += (i == 1 ? std::to_string(vertices.size()) + " " + std::to_string(promised_faces) + " 0" : body[i]) + "\n";
+    return out;
+  };
+  ASSERT_GT(text(faces.size(), lines).size(), std::size_t(3) << 20) << "several pieces of a megabyte";
+
+  ImportReport report;
+  const Mesh m = parse_mesh("grid.off", ".off", text(faces.size(), lines), report);
+  EXPECT_EQ(m.vertices, vertices);
+  EXPECT_EQ(m.faces, faces);
+  ASSERT_EQ(m.group_names, (std::vector<std::string>{"color 1 0 0", "(no color)", "color 0 0 1.0"}));
+  ASSERT_EQ(m.face_group.size(), faces.size());
+  for (std::size_t k = 0; k < faces.size(); ++k)
+    ASSERT_EQ(m.face_group[k], color[k] == "1 0 0" ? 0 : color[k].empty() ? 1 : 2) << k;
+  EXPECT_TRUE(report.warnings.empty());
+
+  auto error_of = [&](std::size_t promised_faces, const std::vector<std::string>& body) {
+    ImportReport ignored;
+    try {
+      parse_mesh("grid.off", ".off", text(promised_faces, body), ignored);
+    } catch (const ImportError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  std::vector<std::string> planted = lines;
+  const std::size_t late_vertex = vertices.size() - 10, late_face = faces.size() / 2;
+  planted[vertex_line[late_vertex]] = "0 zero 0";
+  planted[face_line[late_face]] = "3 0 1";
+  EXPECT_EQ(error_of(faces.size(), planted), "grid.off: line " + std::to_string(vertex_line[late_vertex] + 1) +
+                                                 ": vertex " + std::to_string(late_vertex) +
+                                                 ": expected a number, found 'zero'");
+  planted[vertex_line[late_vertex]] = lines[vertex_line[late_vertex]];
+  EXPECT_EQ(error_of(faces.size(), planted), "grid.off: line " + std::to_string(face_line[late_face] + 1) + ": face " +
+                                                 std::to_string(late_face) +
+                                                 ": the count promises 3 vertex indices, the line has 2");
+  EXPECT_EQ(error_of(faces.size() + 5, lines),
+            "grid.off: truncated: the header promises " + std::to_string(faces.size() + 5) +
+                " faces, the file ends after " + std::to_string(faces.size()));
+  std::vector<std::string> longer = lines;
+  longer.push_back("# after the faces");
+  longer.push_back("1 2 3");
+  longer.push_back("not read");
+  ImportReport more;
+  parse_mesh("grid.off", ".off", text(faces.size(), longer), more);
+  ASSERT_EQ(more.warnings.size(), 1u);
+  EXPECT_NE(more.warnings[0].find("content after the last face ignored (from line " + std::to_string(lines.size() + 2) + ")"),
+            std::string::npos)
+      << more.warnings[0];
+}
+
 TEST(SceneImport, BadFilesGiveOneLineNamingTheFile) {
   for (const BadFile& bad : bad_files()) {
     std::string path = temp().write(bad.name, bad.bytes);

@@ -412,7 +412,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   detail::overlapping_box_pairs(boxes, axis, test_boxes);
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const Found& f : found) pairs.insert(pairs.end(), f.pairs.begin(), f.pairs.end());
-  std::sort(pairs.begin(), pairs.end());
+  tbb::parallel_sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
   // Pieces of one pair of coplanar groups lie on one line; they are joined below.

@@ -358,7 +358,7 @@ class Classifier {
     // The sources through each mesh vertex: their planes contain it exactly. Counted, placed by a
     // scan and filled on every thread, each list then sorted. Each thread remembers the last
     // source it met at each vertex (`mark`), so that a vertex of several faces of one source
-    // counts once: the counting marks s, the filling ~s.
+    // counts once: the counting marks s, the filling -2 - s (-1 is none).
     vertex_sources_.resize(meshes.size());
     tbb::enumerable_thread_specific<std::vector<std::vector<std::int32_t>>> last;
     auto each_vertex_source = [&](auto mark, auto visit) {  // visit(mesh, vertex, source), each triple once
@@ -389,7 +389,7 @@ class Classifier {
       vs.sources.resize(vs.start.back());
       next[m].assign(vs.start.begin(), vs.start.end() - 1);
     }
-    each_vertex_source([](std::int32_t s) { return ~s; }, [&](std::uint32_t m, std::uint32_t v, std::int32_t s) {
+    each_vertex_source([](std::int32_t s) { return -2 - s; }, [&](std::uint32_t m, std::uint32_t v, std::int32_t s) {
       vertex_sources_[m].sources[std::atomic_ref(next[m][v]).fetch_add(1, std::memory_order_relaxed)] = s;
     });
     for (auto& vs : vertex_sources_)

@@ -495,29 +495,24 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
       }
     }
   });
-  // The pieces of each pair of groups, in chunk order: references sorted by key, then by place
-  // (a stable sort, on every thread).
-  std::vector<std::pair<GroupPair, const Piece*>> by_group;
+  // The pieces of each pair of groups, in chunk order: references sorted by key, then by their
+  // place in chunk order (a stable sort, on every thread).
+  struct Keyed {
+    GroupPair key;
+    std::uint32_t place;
+    const Piece* piece;
+  };
+  std::vector<Keyed> by_group;
   std::size_t pieces = 0;
   for (const auto& chunk : chunk_pieces) pieces += chunk.size();
   by_group.reserve(pieces);
   for (const auto& chunk : chunk_pieces)
-    for (const auto& [key, piece] : chunk) by_group.emplace_back(key, &piece);
-  {
-    std::vector<std::pair<GroupPair, std::uint32_t>> keyed(by_group.size());
-    parallel_chunks(by_group.size(), 16384, [&](const auto& range) {
-      for (std::size_t k = range.begin(); k != range.end(); ++k) keyed[k] = {by_group[k].first, std::uint32_t(k)};
-    });
-    tbb::parallel_sort(keyed.begin(), keyed.end());
-    std::vector<std::pair<GroupPair, const Piece*>> sorted(by_group.size());
-    parallel_chunks(keyed.size(), 16384, [&](const auto& range) {
-      for (std::size_t k = range.begin(); k != range.end(); ++k) sorted[k] = by_group[keyed[k].second];
-    });
-    by_group.swap(sorted);
-  }
+    for (const auto& [key, piece] : chunk) by_group.push_back({key, std::uint32_t(by_group.size()), &piece});
+  tbb::parallel_sort(by_group.begin(), by_group.end(),
+                     [](const Keyed& x, const Keyed& y) { return std::tie(x.key, x.place) < std::tie(y.key, y.place); });
   std::vector<std::size_t> run_starts;  // where each pair of groups begins in by_group, and its end
   for (std::size_t k = 0; k < by_group.size(); ++k)
-    if (k == 0 || by_group[k].first != by_group[k - 1].first) run_starts.push_back(k);
+    if (k == 0 || by_group[k].key != by_group[k - 1].key) run_starts.push_back(k);
   run_starts.push_back(by_group.size());
 
   // Join the pieces of each group pair where they meet or overlap (points along one line are
@@ -531,9 +526,9 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
       stop.check();
       for (std::size_t r = chunk * kRunsPerChunk; r < std::min(runs, (chunk + 1) * kRunsPerChunk); ++r) {
-        const GroupPair& key = by_group[run_starts[r]].first;
+        const GroupPair& key = by_group[run_starts[r]].key;
         list.clear();
-        for (std::size_t k = run_starts[r]; k < run_starts[r + 1]; ++k) list.push_back(by_group[k].second);
+        for (std::size_t k = run_starts[r]; k < run_starts[r + 1]; ++k) list.push_back(by_group[k].piece);
         // All on the line where the two groups' planes meet.
         const int axis = axis_of({std::get<0>(key), list.front()->face_a}, {std::get<2>(key), list.front()->face_b});
         auto compare = [axis](const EK::Point_3& p, const EK::Point_3& q) { return compare_on_line(p, q, axis); };
@@ -570,7 +565,7 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
   std::vector<FaceRef>().swap(faces);
   std::vector<FaceRecord>().swap(records);
   std::vector<std::pair<std::size_t, std::size_t>>().swap(pairs);
-  std::vector<std::pair<GroupPair, const Piece*>>().swap(by_group);
+  std::vector<Keyed>().swap(by_group);
   std::vector<std::vector<IntersectionSegment>>().swap(joined);
   auto ends = detail::ends_by_point(out);
   auto end_point = [&](std::uint32_t end) -> EK::Point_3& { return end % 2 == 0 ? out[end / 2].a : out[end / 2].b; };

@@ -94,12 +94,11 @@ void coordinate_failure(double v, int axis, std::string_view text, const std::st
 void split_tokens(std::string_view line, std::vector<std::string_view>& out, bool comments) {
   out.clear();
   std::size_t i = 0, n = line.size();
-  auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
   while (i < n) {
-    while (i < n && blank(line[i])) ++i;
+    while (i < n && is_blank(line[i])) ++i;
     if (i >= n || (comments && line[i] == '#')) return;
     std::size_t start = i;
-    while (i < n && !blank(line[i]) && !(comments && line[i] == '#')) ++i;
+    while (i < n && !is_blank(line[i]) && !(comments && line[i] == '#')) ++i;
     out.push_back(line.substr(start, i - start));
   }
 }
@@ -116,14 +115,13 @@ bool LineReader::next(std::string_view& line) {
 }
 
 bool TokenReader::next(std::string_view& token) {
-  auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
-  while (pos_ < text_.size() && (blank(text_[pos_]) || text_[pos_] == '\n')) {
+  while (pos_ < text_.size() && (is_blank(text_[pos_]) || text_[pos_] == '\n')) {
     if (text_[pos_] == '\n') ++line_;
     ++pos_;
   }
   if (pos_ >= text_.size()) return false;
   std::size_t start = pos_;
-  while (pos_ < text_.size() && !blank(text_[pos_]) && text_[pos_] != '\n') ++pos_;
+  while (pos_ < text_.size() && !is_blank(text_[pos_]) && text_[pos_] != '\n') ++pos_;
   token = text_.substr(start, pos_ - start);
   return true;
 }

@@ -35,7 +35,7 @@ constexpr std::size_t kPieceBytes = std::size_t(1) << 20;
 bool has_content(std::string_view line) {
   for (char c : line) {
     if (c == '#') return false;
-    if (c != ' ' && c != '\t' && c != '\r' && c != '\v' && c != '\f') return true;
+    if (!is_blank(c)) return true;
   }
   return false;
 }

@@ -65,7 +65,10 @@ template <class Where>
 void check_coordinate(double v, int axis, std::string_view text, Where&& where);
 void coordinate_failure(double v, int axis, std::string_view text, const std::string& where);
 
-// Splits on blanks (space, tab, \r, \v, \f); a '#' starts a comment when `comments` is set.
+// The blanks that separate tokens: space, tab, \r, \v, \f.
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// Splits on blanks (is_blank); a '#' starts a comment when `comments` is set.
 void split_tokens(std::string_view line, std::vector<std::string_view>& out, bool comments);
 
 // Reads `text` line by line: '\n' ends a line, a '\r' before it is dropped. Counts lines from 1.

@@ -13,6 +13,7 @@
 // within `distance` of K's line and whose foot lies on K is covered; the covered parts are cut out
 // of S. Only nearly parallel pairs cover, so a line crossing another or ending on it is never cut.
 #include <hlr/export/lines.hpp>
+#include <hlr/hidden_line/parallel.hpp>
 
 #include <algorithm>
 #include <array>
@@ -262,6 +263,43 @@ std::optional<Cover> cover_of(const DrawingSegment& s, const Direction& ds, cons
   return Cover{lo, hi, at_lo, at_hi};
 }
 
+// A cover of the segment at `place` in precedence order by the input segment `segment`.
+struct Found {
+  std::uint32_t place, segment;
+  Cover cover;
+};
+constexpr std::size_t kFoundChunk = 4096;
+
+// For each chunk of kFoundChunk places in precedence order (`order`), the covers of its segments
+// by the segments before them in that order, by place: what the merge would find if every segment
+// were kept whole. Each chunk on its own thread.
+std::vector<std::vector<Found>> covers_by_earlier(const std::vector<DrawingSegment>& segments,
+                                                  const std::vector<Direction>& directions,
+                                                  const std::vector<std::uint32_t>& order, const FiledSegments& filed,
+                                                  double distance) {
+  const std::size_t n = order.size();
+  std::vector<std::uint32_t> place_of(n);
+  for (std::uint32_t place = 0; place < n; ++place) place_of[order[place]] = place;
+  std::vector<std::vector<Found>> found((n + kFoundChunk - 1) / kFoundChunk);
+  hidden_line::parallel_chunks(found.size(), 1, [&](const auto& range) {
+    std::vector<std::uint32_t> near;
+    for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk)
+      for (std::size_t place = chunk * kFoundChunk; place < std::min(n, (chunk + 1) * kFoundChunk); ++place) {
+        const std::uint32_t i = order[place];
+        near.clear();
+        filed.query(segments[i], directions[i], distance, [&](std::uint32_t k) {
+          if (place_of[k] < place) near.push_back(k);
+        });
+        std::sort(near.begin(), near.end());  // a segment comes once per cell it shares with i
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+        for (const std::uint32_t k : near)
+          if (auto c = cover_of(segments[i], directions[i], segments[k], directions[k], distance))
+            found[chunk].push_back({std::uint32_t(place), k, *c});
+      }
+  });
+  return found;
+}
+
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
@@ -294,31 +332,41 @@ MergedSegments merge(const std::vector<DrawingSegment>& segments, double distanc
   PieceGrid piece_grid(extent, n / 64, distance);
   // Kept things are numbered in the order they are kept, which orders equal covers: kept_as[i]
   // is segment i's number if it is kept whole, else none (not merged yet, or cut).
-  std::vector<std::uint32_t> kept_as(n, none), seen(n, none);
+  std::vector<std::uint32_t> kept_as(n, none);
   std::uint32_t kept_count = 0;
   std::vector<DrawingSegment> pieces;
   std::vector<Direction> piece_directions;
   std::vector<std::uint32_t> piece_kept_as;
   // The pieces of cut segment i are pieces[pieces_of[i].first, pieces_of[i].second).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pieces_of(n);
+  // The covers of each segment by the input segments before it in precedence order, as though
+  // every one of those were kept whole, found on every thread; the merge below keeps those by
+  // segments that were. Most segments meet none, and the search is most of the merge's time.
+  const std::vector<std::vector<Found>> found =
+      all_pairs ? std::vector<std::vector<Found>>() : covers_by_earlier(segments, directions, order, *filed, distance);
+  std::size_t next = 0;  // in found[place / kFoundChunk]
   std::vector<Cover> covers, runs;
-  for (const std::uint32_t i : order) {
+  for (std::size_t place = 0; place < n; ++place) {
+    const std::uint32_t i = order[place];
     const DrawingSegment& s = segments[i];
     const Direction& ds = directions[i];
     covers.clear();
-    auto segment_candidate = [&](std::uint32_t k) {
-      if (kept_as[k] == none || seen[k] == i) return;
-      seen[k] = i;
-      if (auto c = cover_of(s, ds, segments[k], directions[k], distance)) c->by = kept_as[k], covers.push_back(*c);
-    };
     auto piece_candidate = [&](std::uint32_t p) {
       if (auto c = cover_of(s, ds, pieces[p], piece_directions[p], distance)) c->by = piece_kept_as[p], covers.push_back(*c);
     };
     if (all_pairs) {
-      for (std::uint32_t k = 0; k < n; ++k) segment_candidate(k);
+      for (std::uint32_t k = 0; k < n; ++k)
+        if (kept_as[k] != none)
+          if (auto c = cover_of(s, ds, segments[k], directions[k], distance)) c->by = kept_as[k], covers.push_back(*c);
       for (std::uint32_t p = 0; p < pieces.size(); ++p) piece_candidate(p);
     } else {
-      filed->query(s, ds, distance, segment_candidate);
+      const std::vector<Found>& chunk = found[place / kFoundChunk];
+      if (place % kFoundChunk == 0) next = 0;
+      for (; next < chunk.size() && chunk[next].place == place; ++next)
+        if (const std::uint32_t by = kept_as[chunk[next].segment]; by != none) {
+          covers.push_back(chunk[next].cover);
+          covers.back().by = by;
+        }
       piece_grid.query(s, piece_candidate);
     }
     // Covers joined into runs where the gap between them is below the distance (such a gap is a

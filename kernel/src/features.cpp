@@ -1,13 +1,12 @@
 // Feature-edge extraction (hlr/kernel/features.hpp), exact on the input doubles.
 #include <hlr/kernel/features.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
+#include <hlr/kernel/parallel.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
-
-#include <tbb/parallel_for.h>
 
 #include <unordered_map>
 
@@ -56,19 +55,6 @@ auto angle_above(const std::array<NT, 3>& n1, const std::array<NT, 3>& n2, doubl
   return CGAL::is_negative(s) & (s * s > q);
 }
 
-// Calls body(begin, end) for the chunks [k grain, (k + 1) grain) of [0, size), on all threads
-// allowed, inline when there is one chunk (a small mesh does not start the scheduler).
-template <class Body>
-void in_chunks(std::size_t size, std::size_t grain, const Body& body) {
-  const std::size_t chunks = (size + grain - 1) / grain;
-  auto chunk = [&](std::size_t k) { body(k * grain, std::min(size, (k + 1) * grain)); };
-  if (chunks <= 1) {
-    if (size > 0) chunk(0);
-  } else {
-    tbb::parallel_for(std::size_t(0), chunks, chunk);
-  }
-}
-
 // Normals of every face, decided in interval arithmetic and, where the intervals cannot tell,
 // exactly: the facing signs, and the crease test between two faces.
 class FaceNormals {
@@ -90,7 +76,7 @@ class FaceNormals {
       const Vec3& e = *view.eye;
       return {NT(e[0]) - NT(p[0]), NT(e[1]) - NT(p[1]), NT(e[2]) - NT(p[2])};
     };
-    in_chunks(mesh.faces.size(), kBlock, [&](std::size_t begin, std::size_t end) {
+    aligned_chunks(mesh.faces.size(), kBlock, [&](std::size_t begin, std::size_t end) {
       std::vector<std::size_t> undecided;
       {
         CGAL::Protect_FPU_rounding<true> protect;
@@ -357,7 +343,7 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
     while (u > 0 && u < uses.size() && uses[u].key == uses[u - 1].key) ++u;
     return uses.begin() + std::ptrdiff_t(std::min(u, uses.size()));
   };
-  in_chunks(uses.size(), kUses, [&](std::size_t begin, std::size_t end) {
+  aligned_chunks(uses.size(), kUses, [&](std::size_t begin, std::size_t end) {
     for_each_edge(edge_start(begin), edge_start(end), [&](EdgeUses first, EdgeUses last) {
       if (auto edge = feature(first, last)) found[begin / kUses].push_back(std::move(*edge));
     });
@@ -366,7 +352,7 @@ std::vector<FeatureEdge> feature_edges(const Mesh& mesh, const View& view, const
   std::vector<std::size_t> at(found.size() + 1, 0);
   for (std::size_t k = 0; k < found.size(); ++k) at[k + 1] = at[k] + found[k].size();
   out.resize(at.back());
-  in_chunks(found.size(), 1, [&](std::size_t begin, std::size_t end) {
+  aligned_chunks(found.size(), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       std::move(found[k].begin(), found[k].end(), out.begin() + std::ptrdiff_t(at[k]));
       std::vector<FeatureEdge>().swap(found[k]);

@@ -2,10 +2,14 @@
 // in the header, which nearly every file includes), components, closedness and the exact sign of
 // the enclosed volume; coplanar_groups.
 #include <hlr/kernel/mesh_edges.hpp>
+#include <hlr/kernel/parallel.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+
+#include <atomic>
+#include <numeric>
 
 namespace hlr {
 namespace {
@@ -43,35 +47,66 @@ int enclosed_volume_sign(const Mesh& mesh, const std::vector<std::uint32_t>& fac
 }  // namespace
 
 std::vector<EdgeUse> edge_uses(const Mesh& mesh) {
-  std::vector<EdgeUse> uses;
-  std::size_t corners = 0;
-  for (const auto& face : mesh.faces) corners += face.size();
-  uses.reserve(corners);
+  // Each face's first use, in face order (the order the uses are numbered in).
+  const std::size_t nf = mesh.faces.size();
+  std::vector<std::uint32_t> first_use(nf + 1, 0);
   std::uint32_t vertices = 0;
-  for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
-    const auto& face = mesh.faces[f];
-    for (std::size_t i = 0; i < face.size(); ++i) {
-      const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
-      // The per-face bits cover the first 8 (fan) and 4 (source) edges: no shift past them.
-      const bool fan = !mesh.fan_edges.empty() && i < 8 && (mesh.fan_edges[f] >> i & 1u);
-      const std::uint8_t bits = mesh.source_edges.empty() || i >= 4 ? 0 : mesh.source_edges[f] >> i;
-      const std::uint8_t source = (bits & 1u) ? std::uint8_t(1u | ((bits >> 4 & 1u) << 1)) : 0;
-      uses.push_back({edge_key(a, b), f, a < b, fan, source});
-      vertices = std::max(vertices, std::max(a, b) + 1);
-    }
+  for (std::size_t f = 0; f < nf; ++f) {
+    first_use[f + 1] = first_use[f] + std::uint32_t(mesh.faces[f].size());
+    for (std::uint32_t v : mesh.faces[f]) vertices = std::max(vertices, v + 1);
   }
-  // Made in face order, so two stable counting sorts, by the higher vertex and then by the lower,
-  // order them by (key, face) in linear time.
-  std::vector<EdgeUse> by_high(uses.size());
-  std::vector<std::uint32_t> start(std::size_t(vertices) + 1);
-  auto counting_sort = [&](const std::vector<EdgeUse>& from, std::vector<EdgeUse>& to, auto vertex_of) {
-    std::fill(start.begin(), start.end(), 0);
-    for (const EdgeUse& u : from) ++start[vertex_of(u.key) + 1];
-    for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
-    for (const EdgeUse& u : from) to[start[vertex_of(u.key)]++] = u;
+  auto each_use = [&](std::size_t begin, std::size_t end, auto visit) {  // visit(use, its number)
+    for (std::size_t f = begin; f < end; ++f) {
+      const auto& face = mesh.faces[f];
+      for (std::size_t i = 0; i < face.size(); ++i) {
+        const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
+        // The per-face bits cover the first 8 (fan) and 4 (source) edges: no shift past them.
+        const bool fan = !mesh.fan_edges.empty() && i < 8 && (mesh.fan_edges[f] >> i & 1u);
+        const std::uint8_t bits = mesh.source_edges.empty() || i >= 4 ? 0 : mesh.source_edges[f] >> i;
+        const std::uint8_t source = (bits & 1u) ? std::uint8_t(1u | ((bits >> 4 & 1u) << 1)) : 0;
+        visit(EdgeUse{edge_key(a, b), std::uint32_t(f), a < b, fan, source}, first_use[f] + std::uint32_t(i));
+      }
+    }
   };
-  counting_sort(uses, by_high, edge_high);
-  counting_sort(by_high, uses, edge_low);
+  // Filed by their lower vertex on every thread (counted, placed by a scan, written), each
+  // vertex's uses then sorted by (key, number): by (key, face), the uses of one face in its
+  // corner order, whatever thread filed them.
+  constexpr std::size_t kFaces = 16384;
+  std::vector<std::uint32_t> start(std::size_t(vertices) + 1, 0);
+  aligned_chunks(nf, kFaces, [&](std::size_t begin, std::size_t end) {
+    each_use(begin, end, [&](const EdgeUse& u, std::uint32_t) {
+      std::atomic_ref(start[edge_low(u.key) + 1]).fetch_add(1, std::memory_order_relaxed);
+    });
+  });
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1), number;
+  std::vector<EdgeUse> uses;  // 48 MB at 1M faces: its fresh pages faulted in on every thread
+  resize_in_parallel(uses, first_use.back());
+  resize_in_parallel(number, first_use.back());
+  aligned_chunks(nf, kFaces, [&](std::size_t begin, std::size_t end) {
+    each_use(begin, end, [&](const EdgeUse& u, std::uint32_t k) {
+      const std::uint32_t at = std::atomic_ref(next[edge_low(u.key)]).fetch_add(1, std::memory_order_relaxed);
+      uses[at] = u;
+      number[at] = k;
+    });
+  });
+  aligned_chunks(vertices, 1 << 16, [&](std::size_t begin, std::size_t end) {
+    struct Numbered {
+      std::uint32_t number;
+      EdgeUse use;
+    };
+    std::vector<Numbered> here;  // one vertex's uses
+    for (std::size_t v = begin; v < end; ++v) {
+      const std::uint32_t lo = start[v], hi = start[v + 1];
+      if (hi - lo < 2) continue;
+      here.clear();
+      for (std::uint32_t k = lo; k < hi; ++k) here.push_back({number[k], uses[k]});
+      std::sort(here.begin(), here.end(), [](const Numbered& x, const Numbered& y) {
+        return x.use.key != y.use.key ? x.use.key < y.use.key : x.number < y.number;
+      });
+      for (std::uint32_t k = lo; k < hi; ++k) uses[k] = here[k - lo].use;
+    }
+  });
   return uses;
 }
 

@@ -1,6 +1,7 @@
 // Feature edges (hlr/kernel/features.hpp): the smooth-edge rule of meshes on tessellated fillets,
 // cylinders, spheres and bends, exactly as the header states it.
 #include <hlr/kernel/features.hpp>
+#include <hlr/kernel/mesh_edges.hpp>
 #include <hlr/kernel/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -212,3 +214,43 @@ TEST(SmoothEdges, TheFilletedBracket) {
 }
 
 }  // namespace
+
+// edge_uses files a large mesh's uses on every thread: the same as a stable sort by key of the
+// uses made in face and corner order, including the uses of one edge by one face twice (a face
+// that doubles back), vertices with hundreds of uses, and every fan and source bit.
+TEST(MeshEdges, EdgeUsesAreTheStableSortByKey) {
+  std::mt19937 random(7);
+  Mesh mesh;
+  const std::uint32_t vertices = 3000;
+  mesh.vertices.resize(vertices);
+  std::uniform_int_distribution<std::uint32_t> vertex(0, vertices - 1), hub(0, 3), corners(3, 7);
+  for (int f = 0; f < 70000; ++f) {
+    std::vector<std::uint32_t> face;
+    for (std::uint32_t k = corners(random); k-- > 0;) face.push_back(f % 5 == 0 ? hub(random) : vertex(random));
+    if (f % 97 == 0) face = {face[0], face[1], face[0], face[2]};  // edge face[0]-face[1] twice
+    mesh.faces.push_back(face);
+    mesh.fan_edges.push_back(std::uint8_t(random()));
+    mesh.source_edges.push_back(std::uint8_t(random()));
+  }
+  std::vector<EdgeUse> expected;
+  for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
+    const auto& face = mesh.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
+      const bool fan = i < 8 && (mesh.fan_edges[f] >> i & 1u);
+      const std::uint8_t bits = i < 4 ? std::uint8_t(mesh.source_edges[f] >> i) : 0;
+      expected.push_back({edge_key(a, b), f, a < b, fan, std::uint8_t((bits & 1u) ? 1u | ((bits >> 4 & 1u) << 1) : 0u)});
+    }
+  }
+  std::stable_sort(expected.begin(), expected.end(), [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  ASSERT_EQ(uses.size(), expected.size());
+  for (std::size_t k = 0; k < uses.size(); ++k) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(uses[k].key, expected[k].key);
+    EXPECT_EQ(uses[k].face, expected[k].face);
+    EXPECT_EQ(uses[k].forward, expected[k].forward);
+    EXPECT_EQ(uses[k].fan, expected[k].fan);
+    ASSERT_EQ(uses[k].source, expected[k].source);
+  }
+}

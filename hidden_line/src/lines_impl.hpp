@@ -240,9 +240,7 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
     bool oriented = false, std::span<const CGAL::Bbox_2> hole_boxes = {}) {
   using G = Geometry<K>;
   using FT = typename G::FT;
-  std::vector<FT> ts;
   const FT &zero = parameter_zero<K>(), &one = parameter_one<K>();
-  if (unit) ts = {zero, one};
   // With `unit`, parameters outside (0, 1) are known from predicates before any is constructed: a
   // corner on the line lies strictly between a and b along the line's main axis, a crossing exactly
   // when a and b lie strictly on opposite sides of the crossing edge's support line.
@@ -289,6 +287,10 @@ std::vector<std::pair<typename Geometry<K>::FT, typename Geometry<K>::FT>> insid
       if (*inside) return {{zero, one}};
       return {};
     }
+  // The parameters where the line may enter or leave the polygon (made only now: most segments the
+  // classifier asks about are settled above).
+  std::vector<FT> ts;
+  if (unit) ts = {zero, one};
   std::size_t offset = 0;
   auto scan = [&](const clip::Contour<K>& c) {
     const std::size_t n = c.size();

@@ -1204,8 +1204,12 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
   keys.resize(filed);
   keys.insert(keys.end(), mirrored.begin(), mirrored.end());
   std::vector<Key>().swap(mirrored);
-  detail::LooseGrid box_grid(box_domain, uncertain.size());
-  for (std::uint32_t i : uncertain) box_grid.insert(i, images[i].bbox());
+  // The uncertain lines' boxes filed at once (id k: the line uncertain[k]).
+  std::vector<CGAL::Bbox_2> uncertain_boxes(uncertain.size());
+  parallel_chunks(uncertain.size(), 4096, [&](const auto& range) {
+    for (std::size_t k = range.begin(); k != range.end(); ++k) uncertain_boxes[k] = images[uncertain[k]].bbox();
+  });
+  const detail::LooseGrid box_grid(box_domain, std::move(uncertain_boxes));
   auto maybe_collinear = [&](std::uint32_t i, std::uint32_t j) {
     const Direction &u = directions[i], &v = directions[j];
     return !(std::abs(u.x * v.y - u.y * v.x) > u.error + v.error) && collinear_lines(i, j);
@@ -1244,7 +1248,7 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
       Joined& mine = joined.local();
       for (std::uint32_t i = std::uint32_t(range.begin()); i != range.end(); ++i)
         if (!lines.lines[i].pieces.empty())
-          box_grid.query(images[i].bbox(), [&](std::uint32_t j) { join_if_collinear(mine, i, j); });
+          box_grid.query(images[i].bbox(), [&](std::uint32_t k) { join_if_collinear(mine, i, uncertain[k]); });
     });
   UnionFind groups(n);
   for (const Joined& mine : joined)

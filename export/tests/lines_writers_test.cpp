@@ -934,13 +934,14 @@ TEST(MergeSegments, ManySegmentsThroughTheGrid) {
 // a candidate keeps. Segments on a coarse grid, many repeated nearly on top of each other (moved,
 // turned, cut short or reversed by about the distance, above and below it), near and far from the
 // origin and at several scales, so that covers, cut pieces and pieces covering later segments are
-// common.
+// common. The last draws have thousands of segments: the covers are then found in several chunks,
+// on every thread.
 TEST(MergeSegments, SameAsTheMergeWithEveryPairACandidate) {
   std::mt19937_64 random(20261206);
   auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
   auto pick = [&](int n) { return int(random() % unsigned(n)); };
   std::size_t merged_total = 0;
-  for (int draw = 0; draw < 300; ++draw) {
+  for (int draw = 0; draw < 303; ++draw) {
     const double scale = std::pow(10.0, pick(7) - 3), distance = 0.01 * scale;
     const Point2 origin{pick(3) == 0 ? 1e6 * scale : 0.0, pick(3) == 0 ? -3e5 * scale : 0.0};
     auto grid_point = [&] { return Point2{origin[0] + scale * pick(8), origin[1] + scale * pick(8)}; };
@@ -949,7 +950,7 @@ TEST(MergeSegments, SameAsTheMergeWithEveryPairACandidate) {
       return Point2{p[0] + uniform(-r, r), p[1] + uniform(-r, r)};
     };
     std::vector<DrawingSegment> in;
-    const int n = 20 + pick(200);
+    const int n = draw < 300 ? 20 + pick(200) : 9000 + pick(1000);
     for (int i = 0; i < n; ++i) {
       DrawingSegment s;
       if (in.empty() || pick(3) == 0) {

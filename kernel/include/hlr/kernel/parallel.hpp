@@ -1,9 +1,9 @@
-// hlr kernel, parallel loops: oneTBB over chunks of an index range, run inline when the range
-// is one chunk, so that a small scene does not pay for starting the scheduler; from scene import
-// up (hlr/hidden_line/parallel.hpp brings them into hidden_line). Callers process each index on
-// its own, so results never depend on the number of threads. Each call of the body gets
-// at most `grain` indices (oneTBB's simple partitioner; its default one may hand a thread a large
-// share of the whole range at once), so that a stop polled once per call takes effect soon.
+// hlr kernel, parallel loops: oneTBB over chunks of an index range, run inline when the range is
+// one chunk, so that a small scene does not pay for starting the scheduler; from scene import up
+// (hlr/hidden_line/parallel.hpp brings them into hidden_line). Callers process each index on its
+// own, so results never depend on the number of threads. Each call of the body gets at most
+// `grain` indices (oneTBB's simple partitioner; its default one may hand a thread a large share of
+// the whole range at once), so that a stop polled once per call takes effect soon.
 #pragma once
 
 #include <tbb/blocked_range.h>

@@ -562,7 +562,10 @@ class Classifier {
     SharedParams params;
     std::unordered_map<std::uint32_t, Depth<K>> by_source;  // the line against each source's plane
     std::deque<Depth<K>> edge_on;                           // against faces seen edge-on
+    // The covers that last hid a whole line by themselves, the latest first (kNoCover: none yet).
+    std::array<std::uint32_t, 2> recent_hiders{kNoCover, kNoCover};
   };
+  static constexpr std::uint32_t kNoCover = ~std::uint32_t(0);
 
   // Splits the line into pieces; `own` are the sources whose plane contains the line (they never
   // lie strictly nearer), sorted.
@@ -618,38 +621,67 @@ class Classifier {
       return d;
     };
 
+    // A cover's depth against the line where the cover may lie nearer than the line somewhere
+    // along it, and its box meets the line; else null.
+    const double line_depth = std::min(G::interval(a.z).first, G::interval(b.z).first);
+    auto nearer_cover = [&](std::uint32_t i) -> const Depth<K>* {
+      // Wholly behind the nearest point of the line: on interval bounds, so it decides nothing
+      // the exact test below would not.
+      if (nearest_[i] < line_depth) return nullptr;
+      const Cover<K>& cover = covers_[i];
+      if (std::binary_search(own.begin(), own.end(), std::int32_t(cover.source))) return nullptr;
+      const Depth<K>& depth = depth_of_source(cover.source);
+      // Never strictly nearer along the line (the depth difference is linear in t).
+      if (depth.sign0 <= 0 && depth.sign1 <= 0) return nullptr;
+      // A line across the box's corner: the boxes overlap, the cover lies off the line.
+      if (line_misses_box<K>(line.a, line.b, grid_.box(i))) return nullptr;
+      return &depth;
+    };
+    auto inside = [&](std::uint32_t i) {
+      const std::span<const CGAL::Bbox_2> hole_boxes(hole_boxes_.data() + hole_box_start_[i],
+                                                     hole_box_start_[i + 1] - hole_box_start_[i]);
+      return inside_intervals(line, *covers_[i].polygon, params, true, true, true, hole_boxes);
+    };
+    const FT &zero = parameter_zero<K>(), &one = parameter_one<K>();
+    auto& whole = scratch.whole;
+    auto& recent = scratch.recent_hiders;
+    auto remember = [&](std::uint32_t i) {  // in front, once
+      const auto at = std::find(recent.begin(), recent.end() - 1, i);
+      std::rotate(recent.begin(), at, at + 1);
+      recent[0] = i;
+    };
+    // Lines side by side are mostly hidden by the same cover: those that last completed the cover
+    // of a line all along are asked first, each alone. When one hides this line all along, so would
+    // the covers the grid gives (it is one of them): the answer is the same.
+    for (std::size_t k = 0; k < recent.size() && recent[k] != kNoCover; ++k) {
+      const Depth<K>* depth = nearer_cover(recent[k]);
+      if (!depth || depth->sign0 <= 0 || depth->sign1 <= 0) continue;
+      whole.clear();
+      for (const auto& [lo, hi] : inside(recent[k])) whole.emplace_back(lo, hi);
+      if (!whole.empty() && covers_unit(whole)) {
+        remember(recent[k]);
+        return {{zero, one, false}};
+      }
+    }
+
     // Where covers nearer than the line all along it (`whole`) cover all of it, the line is hidden
     // all along: every span lies in one of them, whatever the other occluders do.
-    const double line_depth = std::min(G::interval(a.z).first, G::interval(b.z).first);
-    auto& whole = scratch.whole;
     whole.clear();
     bool hidden_all_along = false;
     grid_.query(line.bbox(), [&](std::uint32_t i) {
-      // Wholly behind the nearest point of the line: on interval bounds, so it decides nothing
-      // the exact test below would not.
-      if (nearest_[i] < line_depth) return false;
-      const Cover<K>& cover = covers_[i];
-      if (std::binary_search(own.begin(), own.end(), std::int32_t(cover.source))) return false;
-      const Depth<K>& depth = depth_of_source(cover.source);
-      // Never strictly nearer along the line (the depth difference is linear in t).
-      if (depth.sign0 <= 0 && depth.sign1 <= 0) return false;
-      // A line across the box's corner: the boxes overlap, the cover lies off the line.
-      if (line_misses_box<K>(line.a, line.b, grid_.box(i))) return false;
-      const bool nearer_all_along = depth.sign0 > 0 && depth.sign1 > 0;
-      bool added = false;
-      const std::span<const CGAL::Bbox_2> hole_boxes(hole_boxes_.data() + hole_box_start_[i],
-                                                     hole_box_start_[i + 1] - hole_box_start_[i]);
-      for (const auto& [lo, hi] : inside_intervals(line, *cover.polygon, params, true, true, true, hole_boxes)) {
-        occluders_.push_back({lo, hi, &depth});
-        if (nearer_all_along) {
-          whole.emplace_back(lo, hi);
-          added = true;
-        }
+      const Depth<K>* depth = nearer_cover(i);
+      if (!depth) return false;
+      const bool nearer_all_along = depth->sign0 > 0 && depth->sign1 > 0;
+      const std::size_t before = whole.size();
+      for (const auto& [lo, hi] : inside(i)) {
+        occluders_.push_back({lo, hi, depth});
+        if (nearer_all_along) whole.emplace_back(lo, hi);
       }
-      if (added) hidden_all_along = covers_unit(whole);
+      if (whole.size() == before) return false;
+      hidden_all_along = covers_unit(whole);
+      if (hidden_all_along) remember(i);
       return hidden_all_along;
     });
-    const FT &zero = parameter_zero<K>(), &one = parameter_one<K>();
     if (hidden_all_along) return {{zero, one, false}};
 
     // Faces seen edge-on cover the line where their edges' images run along it.

@@ -174,18 +174,26 @@ void overlapping_box_pairs(const std::vector<Box>& boxes, int axis, Visit&& visi
     }
   }
   auto visit_pair = [&](const Swept& a, const Swept& b) { visit(boxes[a.box], boxes[b.box]); };
+  // Each column's boxes are copied side by side before its sweep, which reads each of them again
+  // for every box before it in reach: then from one array, in order.
+  struct Entry {
+    Swept box;
+    std::uint32_t u0, v0;  // its first column across
+  };
   auto sweep_columns = [&](std::size_t first, std::size_t last) {
+    std::vector<Entry> column;
     for (std::size_t col = first; col != last; ++col) {
       const std::size_t cu = col / nv, cv = col % nv;
-      for (std::uint32_t k = start[col]; k < start[col + 1]; ++k) {
-        const Swept& a = swept[members[k]];
-        const Cells& ca = cells[members[k]];
-        for (std::uint32_t l = k + 1; l < start[col + 1]; ++l) {
-          const Swept& b = swept[members[l]];
-          if (b.lo > a.hi) break;
-          if (!overlap(a, b)) continue;
-          const Cells& cb = cells[members[l]];
-          if (std::max(ca.u0, cb.u0) == cu && std::max(ca.v0, cb.v0) == cv) visit_pair(a, b);
+      column.clear();
+      for (std::uint32_t k = start[col]; k < start[col + 1]; ++k)
+        column.push_back({swept[members[k]], cells[members[k]].u0, cells[members[k]].v0});
+      for (std::size_t k = 0; k < column.size(); ++k) {
+        const Entry& a = column[k];
+        for (std::size_t l = k + 1; l < column.size(); ++l) {
+          const Entry& b = column[l];
+          if (b.box.lo > a.box.hi) break;
+          if (!overlap(a.box, b.box)) continue;
+          if (std::max(a.u0, b.u0) == cu && std::max(a.v0, b.v0) == cv) visit_pair(a.box, b.box);
         }
       }
     }

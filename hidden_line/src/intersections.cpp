@@ -385,7 +385,8 @@ std::vector<IntersectionSegment> intersection_lines(const std::vector<Mesh>& mes
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
     std::size_t polls = 0;
   };
-  tbb::enumerable_thread_specific<Found> found;
+  // A thread's own Found is looked up per pair: a key of its own makes that a native TLS read.
+  tbb::enumerable_thread_specific<Found, tbb::cache_aligned_allocator<Found>, tbb::ets_key_per_instance> found;
   const bool parallel = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1;
   Found* const alone = parallel ? nullptr : &found.local();  // spares a thread-local lookup per pair
   auto test_boxes = [&](const Box& x, const Box& y) {

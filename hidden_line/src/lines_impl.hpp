@@ -1256,7 +1256,8 @@ std::vector<DrawnSegment<K>> drawing_segments(const LineSet<K>& lines, StopToken
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     std::size_t polls = 0;
   };
-  tbb::enumerable_thread_specific<Joined> joined;
+  // Looked up per pair: a key of its own makes that a native TLS read.
+  tbb::enumerable_thread_specific<Joined, tbb::cache_aligned_allocator<Joined>, tbb::ets_key_per_instance> joined;
   // The double kernel's orientation is not transitive, nor symmetric in the two lines: there every
   // candidate pair is tested, in one order, so that the groups do not depend on which thread
   // meets which pair first.

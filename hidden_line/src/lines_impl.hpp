@@ -562,7 +562,8 @@ class Classifier {
     SharedParams params;
     std::unordered_map<std::uint32_t, Depth<K>> by_source;  // the line against each source's plane
     std::deque<Depth<K>> edge_on;                           // against faces seen edge-on
-    // The covers that last hid a whole line by themselves, the latest first (kNoCover: none yet).
+    // The covers that last completed the cover of a line all along, the latest first (kNoCover:
+    // none yet). classify asks them first.
     std::array<std::uint32_t, 2> recent_hiders{kNoCover, kNoCover};
   };
   static constexpr std::uint32_t kNoCover = ~std::uint32_t(0);

@@ -63,10 +63,9 @@ template <class K>
 std::optional<std::pair<double, double>> exact_doubles(const typename Geometry<K>::Point& p) {
   using G = Geometry<K>;
   if constexpr (!G::exact_constructions) return std::nullopt;
-  const auto [x0, x1] = G::interval(G::x(p));
-  const auto [y0, y1] = G::interval(G::y(p));
-  if (x0 != x1 || y0 != y1) return std::nullopt;
-  return std::pair{x0, y0};
+  const CGAL::Bbox_2 box = G::bbox(p);  // the approximation Epeck keeps, without a lazy node per coordinate
+  if (box.xmin() != box.xmax() || box.ymin() != box.ymax()) return std::nullopt;
+  return std::pair{box.xmin(), box.ymin()};
 }
 
 // A line's image a -> b in the view plane, and parameters along it.
@@ -565,6 +564,8 @@ class Classifier {
     // The covers that last completed the cover of a line all along, the latest first (kNoCover:
     // none yet). classify asks them first.
     std::array<std::uint32_t, 2> recent_hiders{kNoCover, kNoCover};
+    // The line inside each recent hider, as asked (kept for the grid, which gives it again).
+    std::array<std::vector<std::pair<FT, FT>>, 2> recent_inside;
   };
   static constexpr std::uint32_t kNoCover = ~std::uint32_t(0);
 
@@ -654,11 +655,14 @@ class Classifier {
     // Lines side by side are mostly hidden by the same cover: those that last completed the cover
     // of a line all along are asked first, each alone. When one hides this line all along, so would
     // the covers the grid gives (it is one of them): the answer is the same.
+    std::array<std::uint32_t, 2> asked{kNoCover, kNoCover};  // the recent hiders whose inside is known
     for (std::size_t k = 0; k < recent.size() && recent[k] != kNoCover; ++k) {
       const Depth<K>* depth = nearer_cover(recent[k]);
       if (!depth || depth->sign0 <= 0 || depth->sign1 <= 0) continue;
-      whole.clear();
-      for (const auto& [lo, hi] : inside(recent[k])) whole.emplace_back(lo, hi);
+      auto& in = scratch.recent_inside[k];
+      in = inside(recent[k]);
+      asked[k] = recent[k];
+      whole.assign(in.begin(), in.end());  // covers_unit sorts its intervals; `in` keeps their order
       if (!whole.empty() && covers_unit(whole)) {
         remember(recent[k]);
         return {{zero, one, false}};
@@ -674,7 +678,10 @@ class Classifier {
       if (!depth) return false;
       const bool nearer_all_along = depth->sign0 > 0 && depth->sign1 > 0;
       const std::size_t before = whole.size();
-      for (const auto& [lo, hi] : inside(i)) {
+      std::vector<std::pair<FT, FT>> fresh;
+      const auto* in = i == asked[0] ? &scratch.recent_inside[0] : i == asked[1] ? &scratch.recent_inside[1] : nullptr;
+      if (!in) in = &(fresh = inside(i));
+      for (const auto& [lo, hi] : *in) {
         occluders_.push_back({lo, hi, depth});
         if (nearer_all_along) whole.emplace_back(lo, hi);
       }
@@ -760,7 +767,10 @@ class Classifier {
     };
     const I pa = bounds(plane.a), pb = bounds(plane.b), pc = bounds(plane.c);
     double z = -std::numeric_limits<double>::infinity();
-    for (const P& p : polygon.outer.points) z = std::max(z, (pa * bounds(G::x(p)) + pb * bounds(G::y(p)) + pc).sup());
+    for (const P& p : polygon.outer.points) {
+      const CGAL::Bbox_2 box = G::bbox(p);  // without a lazy node per coordinate
+      z = std::max(z, (pa * I(box.xmin(), box.xmax()) + pb * I(box.ymin(), box.ymax()) + pc).sup());
+    }
     return z;
   }
   // Whether closed intervals in [0, 1] cover all of it.

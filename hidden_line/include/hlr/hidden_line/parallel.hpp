@@ -6,6 +6,7 @@
 
 namespace hlr::hidden_line {
 
+using hlr::free_each_in_parallel;
 using hlr::free_in_parallel;
 using hlr::parallel_chunks;
 using hlr::resize_in_parallel;

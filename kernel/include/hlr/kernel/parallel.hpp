@@ -43,6 +43,13 @@ void free_in_parallel(std::vector<T>& v) {
   std::vector<T>().swap(v);
 }
 
+// free_in_parallel for arrays kept per mesh: a scene of one mesh holds them all in one.
+template <class T>
+void free_each_in_parallel(std::vector<std::vector<T>>& vs) {
+  for (auto& v : vs) free_in_parallel(v);
+  std::vector<std::vector<T>>().swap(vs);
+}
+
 // Resizes `v` to n value-initialized elements, the pages of its new room first written on every
 // thread: in a large drawing an array's fresh pages cost more than filling it does (a page fault
 // each), and faults on two threads overlap. (The bytes are written before the elements are made

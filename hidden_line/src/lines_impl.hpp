@@ -776,12 +776,12 @@ class Classifier {
   // Whether closed intervals in [0, 1] cover all of it.
   static bool covers_unit(std::vector<std::pair<FT, FT>>& intervals) {
     std::sort(intervals.begin(), intervals.end());
-    FT reach(0);
+    FT reach = parameter_zero<K>();  // the shared constants: FT(0) and FT(1) would each be a new node
     for (const auto& [lo, hi] : intervals) {
       if (reach < lo) return false;
       if (reach < hi) reach = hi;
     }
-    return !(reach < FT(1));
+    return !(reach < parameter_one<K>());
   }
 
   const std::vector<Mesh>& meshes_;

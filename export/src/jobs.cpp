@@ -56,8 +56,8 @@ struct Solution {
   std::vector<hidden_line::DrawnSegment<K>> segments;
 };
 
-// The exact solution freed on every thread (lazy numbers by the million: a second on one at 1M
-// faces, with the other thread idle).
+// The exact solution freed on every thread: lazy numbers by the million, half a second on one
+// thread at 1M faces, with the other idle.
 template <class K>
 void free_in_parallel(std::unique_ptr<Solution<K>>& solution) {
   hidden_line::free_in_parallel(solution->lines.lines);

@@ -61,9 +61,7 @@ struct Solution {
 template <class K>
 void free_in_parallel(std::unique_ptr<Solution<K>>& solution) {
   hidden_line::free_in_parallel(solution->lines.lines);
-  hidden_line::free_in_parallel(solution->sources.polygons);
-  hidden_line::free_in_parallel(solution->sources.lines);
-  hidden_line::free_each_in_parallel(solution->sources.view_points);
+  release_all_but_image_points(solution->sources);  // already done after the lines stage, unless sorted
   hidden_line::free_each_in_parallel(solution->sources.image_points);
   solution.reset();
 }

@@ -96,7 +96,7 @@ struct ImageLine {
   }
   FT param(const P& q) const {
     if (auto t = end_param(q)) return *t;
-    return parameter_along<K>(a, q, along_x ? dx : dy, along_x);
+    return parameter_along<K>(a, b, q, along_x ? dx : dy, along_x);
   }
   // The same, with an end also known by its value where both are exact_doubles: the ends of
   // coincident lines, or vertices one behind the other in an axis view, are one point made twice.
@@ -106,10 +106,10 @@ struct ImageLine {
       if (key == exact_doubles<K>(a)) return parameter_zero<K>();
       if (key == exact_doubles<K>(b)) return parameter_one<K>();
     }
-    return parameter_along<K>(a, q, along_x ? dx : dy, along_x);
+    return parameter_along<K>(a, b, q, along_x ? dx : dy, along_x);
   }
   // The parameter where the line meets the line through c and d (not parallel to it).
-  FT param_of_crossing(const P& c, const P& d) const { return crossing_parameter<K>(a, dx, dy, c, d); }
+  FT param_of_crossing(const P& c, const P& d) const { return crossing_parameter<K>(a, b, dx, dy, c, d); }
   // On the exact kernel the line's own ends for t exactly 0 or 1, rather than constructions equal
   // to them.
   P at(const FT& t) const {

@@ -4,6 +4,7 @@
 #include <hlr/kernel/double_orientation.hpp>
 #include <hlr/kernel/exact_output.hpp>
 #include <hlr/kernel/line_box.hpp>
+#include <hlr/kernel/line_parameters.hpp>
 #include <hlr/kernel/plane_side.hpp>
 #include <hlr/kernel/view_predicates.hpp>
 
@@ -535,6 +536,85 @@ TEST(ExactOutput, NearestQuotientRoundsAsToDouble) {
       const double e = expected(num, den);
       EXPECT_FALSE(std::isnormal(e) && std::isnormal(std::nextafter(e, HUGE_VAL))) << i << " " << e;
     }
+  }
+}
+
+// Crossing and along-axis parameters (exact_parameter.hpp): the interval CGAL's lazy construction
+// of the same formula gives, the exact rational, and t and the points at t rounded as the general
+// path rounds the same rationals; with coordinates random, snapped (coincidences, ties), far from
+// the origin, of mixed magnitude, and not doubles (thirds: the general path).
+TEST(ExactParameter, AgreesWithTheLazyConstructionAndRoundsAsToDouble) {
+  using G = Geometry<ExactKernel>;
+  using FT = ExactKernel::FT;
+  using ET = FT::Exact_type;
+  using P = ExactKernel::Point_2;
+  auto reference = [](const ET& e) { return G::to_double(FT(e)); };  // a plain rep: the general path
+  auto same_interval = [](const FT& x, const FT& y) {
+    return CGAL::approx(x).inf() == CGAL::approx(y).inf() && CGAL::approx(x).sup() == CGAL::approx(y).sup();
+  };
+  std::mt19937_64 random(20261207);
+  std::size_t by_quotient = 0, general = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const int mode = i % 5;
+    auto coordinate = [&]() -> FT {
+      if (mode == 4) return FT(hard_value(random, 1)) / FT(3);  // not a double
+      return FT(hard_value(random, mode));
+    };
+    FT c8[8];
+    for (FT& c : c8) c = coordinate();
+    const P a(c8[0], c8[1]), b(c8[2], c8[3]), c(c8[4], c8[5]), d(c8[6], c8[7]);
+    const FT dx = c8[2] - c8[0], dy = c8[3] - c8[1];
+    const ET e[8] = {c8[0].exact(), c8[1].exact(), c8[2].exact(), c8[3].exact(),
+                     c8[4].exact(), c8[5].exact(), c8[6].exact(), c8[7].exact()};
+    auto check = [&](const FT& t, const FT& old, const ET& num, const ET& den) {
+      ASSERT_TRUE(same_interval(t, old)) << i;
+      const ET exact = num / den;
+      const auto* rep = parameter_detail::parameter_rep(t);
+      ASSERT_NE(rep, nullptr);
+      (rep->quotient() ? by_quotient : general) += 1;
+      // Rounded before anything evaluates t exactly, then its value.
+      ASSERT_EQ(G::to_double(t), reference(exact)) << i;
+      for (int k = 0; k < 2; ++k) {
+        const FT& from = k == 0 ? c8[0] : c8[1];
+        const FT& to = k == 0 ? c8[2] : c8[3];
+        ASSERT_EQ(G::to_double_between(from, to, t), reference(from.exact() + exact * (to.exact() - from.exact())))
+            << i << " axis " << k;
+      }
+      ASSERT_EQ(t.exact(), exact) << i;
+      ASSERT_EQ(t.exact(), old.exact()) << i;
+    };
+    const ET den = (e[2] - e[0]) * (e[7] - e[5]) - (e[3] - e[1]) * (e[6] - e[4]);
+    if (!CGAL::is_zero(den)) {
+      const FT old = CGAL::Lazy_construction_nt<ExactKernel, detail::CrossingParameter, detail::CrossingParameter>()(
+          a, dx, dy, c, d);
+      const ET num = (e[4] - e[0]) * (e[7] - e[5]) - (e[5] - e[1]) * (e[6] - e[4]);
+      check(crossing_parameter<ExactKernel>(a, b, dx, dy, c, d), old, num, den);
+    }
+    for (const bool along_x : {true, false}) {
+      const int k = along_x ? 0 : 1;
+      if (CGAL::is_zero(e[2 + k] - e[k])) continue;
+      const FT& delta = along_x ? dx : dy;
+      const FT old = along_x ? CGAL::Lazy_construction_nt<ExactKernel, detail::ParameterAlongX, detail::ParameterAlongX>()(a, c, delta)
+                             : CGAL::Lazy_construction_nt<ExactKernel, detail::ParameterAlongY, detail::ParameterAlongY>()(a, c, delta);
+      check(parameter_along<ExactKernel>(a, b, c, delta, along_x), old, e[4 + k] - e[k], e[2 + k] - e[k]);
+    }
+  }
+  EXPECT_GT(by_quotient, 20000u);
+  EXPECT_GT(general, 5000u);
+}
+
+// A crossing exactly halfway between two doubles rounds to the lower one, as Geometry::to_double
+// rounds: t = 1 + 2^-53 on the line from (0, 0) to (1, 0), and its negative.
+TEST(ExactParameter, TiesGoToTheLowerDouble) {
+  using G = Geometry<ExactKernel>;
+  using FT = ExactKernel::FT;
+  using P = ExactKernel::Point_2;
+  const double up = 1 + 0x1p-52;
+  for (const double sign : {1.0, -1.0}) {
+    const P a(0, 0), b(sign, 0), c(sign, -1), d(sign * up, 1);
+    const FT t = crossing_parameter<ExactKernel>(a, b, FT(sign), FT(0), c, d);
+    EXPECT_EQ(G::to_double(t), 1.0);  // t = 1 + 2^-53 either way
+    EXPECT_EQ(G::to_double_between(FT(0), FT(sign), t), sign > 0 ? 1.0 : -up);
   }
 }
 

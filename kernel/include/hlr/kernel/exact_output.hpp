@@ -112,35 +112,6 @@ inline ModelPointRecipe recipe_of(const ExactKernel::Point_3& p) {
   return {ModelPointRecipe::Kind::input_point, Vec3{a[0].inf(), a[1].inf(), a[2].inf()}};
 }
 
-// The double nearest to num / den, ties to the lower one (as Geometry::to_double rounds); nothing
-// when den is 0 or the quotient is not in the normal range of doubles.
-inline std::optional<double> nearest_quotient(CGAL::Mpzf num, CGAL::Mpzf den) {
-  using Z = CGAL::Mpzf;
-  if (den.sign() == CGAL::ZERO) return std::nullopt;
-  if (den.sign() == CGAL::NEGATIVE) {
-    num = -num;
-    den = -den;
-  }
-  if (num.sign() == CGAL::ZERO) return 0.0;
-  constexpr double up = std::numeric_limits<double>::infinity();
-  // lo, the largest double at most num / den, from a guess a few units in the last place off.
-  double lo = num.to_double() / den.to_double();
-  auto at_most = [&](double x) { return Z(x) * den <= num; };
-  for (int step = 0; !at_most(lo); ++step) {
-    if (step == 8 || !std::isnormal(lo)) return std::nullopt;
-    lo = std::nextafter(lo, -up);
-  }
-  for (int step = 0; at_most(std::nextafter(lo, up)); ++step) {
-    if (step == 8 || !std::isnormal(lo)) return std::nullopt;
-    lo = std::nextafter(lo, up);
-  }
-  const double hi = std::nextafter(lo, up);
-  if (!std::isnormal(lo) || !std::isnormal(hi)) return std::nullopt;
-  if (Z(lo) * den == num) return lo;
-  // num / den − lo <= hi − num / den, that is 2 num <= (lo + hi) den.
-  return num + num <= (Z(lo) + Z(hi)) * den ? lo : hi;
-}
-
 // Orthographic views: the view coordinates of recipe points, rounded as ViewFrame::rounded does
 // the same exact numbers (before its division by the axis scale).
 class RecipeRounding {

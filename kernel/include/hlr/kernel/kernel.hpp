@@ -8,6 +8,7 @@
 // runs on all three. Every robustness decision lives here, not in the algorithms.
 #pragma once
 
+#include <hlr/kernel/exact_parameter.hpp>
 #include <hlr/kernel/interval_orientation.hpp>
 
 #include <CGAL/Bbox_2.h>
@@ -315,6 +316,7 @@ struct CgalGeometry {
     if constexpr (exact_constructions) {
       const std::pair<double, double> approx = CGAL::to_interval(v);
       if (approx.first == approx.second) return approx.first;
+      if (const auto d = nearest_parameter(v)) return *d;
       return nearest_double(CGAL::exact(v));
     } else {
       return CGAL::to_double(v);
@@ -330,6 +332,7 @@ struct CgalGeometry {
         const auto v = CGAL::approx(a) + CGAL::approx(t) * (CGAL::approx(b) - CGAL::approx(a));
         if (v.inf() == v.sup()) return v.inf();
       }
+      if (const auto d = nearest_between(a, b, t)) return *d;
       using ET = typename FT::Exact_type;
       const ET& ea = CGAL::exact(a);
       return nearest_double(ET(ea + CGAL::exact(t) * (CGAL::exact(b) - ea)));

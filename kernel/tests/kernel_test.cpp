@@ -542,7 +542,8 @@ TEST(ExactOutput, NearestQuotientRoundsAsToDouble) {
 // Crossing and along-axis parameters (exact_parameter.hpp): the interval CGAL's lazy construction
 // of the same formula gives, the exact rational, and t and the points at t rounded as the general
 // path rounds the same rationals; with coordinates random, snapped (coincidences, ties), far from
-// the origin, of mixed magnitude, and not doubles (thirds: the general path).
+// the origin, of mixed magnitude, and, in a fifth of the draws, thirds (not doubles: the general
+// path).
 TEST(ExactParameter, AgreesWithTheLazyConstructionAndRoundsAsToDouble) {
   using G = Geometry<ExactKernel>;
   using FT = ExactKernel::FT;

@@ -208,6 +208,13 @@ void triangulate_region(const std::vector<InputPoint3>& p, const std::vector<Loo
 std::size_t prepare_face(const std::vector<InputPoint3>& points, const std::vector<std::uint32_t>& face,
                          std::size_t file_face, PreparedFaces& out) {
   const std::size_t before = out.faces.size();
+  // Most faces are triangles of three distinct corners: one loop, planar, simple, kept as it is
+  // unless on one line (what split_loops and prepare_loop would find, without their copies).
+  if (face.size() == 3 && face[0] != face[1] && face[1] != face[2] && face[2] != face[0]) {
+    if (CGAL::collinear(points[face[0]], points[face[1]], points[face[2]])) return 0;
+    append(out, face);
+    return 1;
+  }
   bool split = false;
   std::vector<Loop> loops = split_loops(face, split);
   std::erase_if(loops, [&](const Loop& l) { return l.size() < 3 || plane_corner(points, l) == l.size(); });

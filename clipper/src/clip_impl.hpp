@@ -63,11 +63,15 @@ int side_of_contour(const Contour<K>& contour, const Point<K>& q, const int* on_
   const auto& pts = contour.points;
   const std::size_t n = pts.size();
   bool inside = false;
+  // Each corner's height against q, compared once: as the end of one edge, then the start of the next.
+  const int y_first = G::compare_y(pts[0], q);
+  int yb = y_first;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = i + 1 == n ? 0 : i + 1;
     const Point<K>& a = pts[i];
     const Point<K>& b = pts[j];
-    const int ya = G::compare_y(a, q), yb = G::compare_y(b, q);
+    const int ya = yb;
+    yb = j == 0 ? y_first : G::compare_y(b, q);
     if (ya > 0 && yb > 0) continue;
     if (ya < 0 && yb < 0) continue;
     const bool along_line = G::exact_constructions && on_line && on_line[i] == 0 && on_line[j] == 0;

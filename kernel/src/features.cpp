@@ -4,7 +4,6 @@
 #include <hlr/kernel/parallel.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
 
@@ -185,7 +184,7 @@ class SmoothSurfaces {
       const CGAL::Uncertain<bool> approx = cross_zero(CGAL::Interval_nt<false>(0));
       if (CGAL::is_certain(approx)) return CGAL::get_certain(approx);
     }
-    return CGAL::get_certain(cross_zero(CGAL::Exact_rational(0)));
+    return CGAL::get_certain(cross_zero(CGAL::Mpzf(0)));
   }
 
   bool collinear(std::uint32_t a, std::uint32_t b, std::uint32_t p) const {

@@ -5,8 +5,8 @@
 #include <hlr/kernel/parallel.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 
 #include <atomic>
 #include <numeric>
@@ -16,7 +16,7 @@ namespace {
 
 // The sign of the volume a closed component's faces enclose: the sum of the fan tetrahedra's
 // determinants from the component's first corner, in interval arithmetic and, when that does not
-// decide, in rationals. Exact: the determinants are of input doubles.
+// decide, in CGAL::Mpzf: exact, the determinants being sums and products of input doubles.
 int enclosed_volume_sign(const Mesh& mesh, const std::vector<std::uint32_t>& faces) {
   const auto& o = mesh.vertices[mesh.faces[faces.front()][0]];
   auto volume = [&](auto zero) {
@@ -41,7 +41,7 @@ int enclosed_volume_sign(const Mesh& mesh, const std::vector<std::uint32_t>& fac
     if (approx.inf() > 0) return 1;
     if (approx.sup() < 0) return -1;
   }
-  return CGAL::sign(volume(CGAL::Exact_rational(0)));
+  return CGAL::sign(volume(CGAL::Mpzf(0)));
 }
 
 }  // namespace

@@ -17,8 +17,6 @@
 #include <CGAL/Mpzf.h>
 
 #include <array>
-#include <cmath>
-#include <limits>
 #include <optional>
 
 namespace hlr {

@@ -133,14 +133,17 @@ inline const ParameterRep* parameter_rep(const CGAL::Epeck::FT& t) {
   const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(t).for_compact_container());
   return dynamic_cast<const ParameterRep*>(rep);
 }
+// t = num / den in Mpzf, when t is a parameter whose points are doubles; else nothing.
+inline std::optional<std::array<CGAL::Mpzf, 2>> quotient_of(const CGAL::Epeck::FT& t) {
+  const ParameterRep* rep = parameter_rep(t);
+  return rep ? rep->quotient() : std::nullopt;
+}
 
 }  // namespace parameter_detail
 
 // The double nearest to t, when t is a parameter whose points are doubles; else nothing.
 inline std::optional<double> nearest_parameter(const CGAL::Epeck::FT& t) {
-  const auto* rep = parameter_detail::parameter_rep(t);
-  if (!rep) return std::nullopt;
-  const auto q = rep->quotient();
+  const auto q = parameter_detail::quotient_of(t);
   if (!q) return std::nullopt;
   return nearest_quotient((*q)[0], (*q)[1]);
 }
@@ -151,13 +154,10 @@ inline std::optional<double> nearest_between(const CGAL::Epeck::FT& a, const CGA
                                              const CGAL::Epeck::FT& t) {
   const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b);
   if (ia.inf() != ia.sup() || ib.inf() != ib.sup()) return std::nullopt;
-  const auto* rep = parameter_detail::parameter_rep(t);
-  if (!rep) return std::nullopt;
-  const auto q = rep->quotient();
+  const auto q = parameter_detail::quotient_of(t);
   if (!q) return std::nullopt;
   using Z = CGAL::Mpzf;
-  const Z& num = (*q)[0];
-  const Z& den = (*q)[1];
+  const auto& [num, den] = *q;
   const Z za(ia.inf());
   return nearest_quotient(za * den + num * (Z(ib.inf()) - za), den);
 }

@@ -1,21 +1,23 @@
 // filtered_sign: the sign of an expression written once for any number type, decided on
-// intervals, and on exact rationals only when the intervals cannot decide. For predicates
-// written by hand on input doubles, outside Geometry<K> (such as whether two triangles that
-// share a corner cross there): the filter lives here, the expression in the algorithm.
+// intervals, and exactly only when the intervals cannot decide. For predicates written by hand on
+// input doubles, outside Geometry<K> (such as whether two triangles that share a corner cross
+// there): the filter lives here, the expression in the algorithm.
 #pragma once
 
 #include <hlr/kernel/kernel.hpp>
 
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 
 #include <type_traits>
 
 namespace hlr {
 
 // `expression(std::type_identity<NT>{})` evaluates the expression in NT and returns its sign
-// (CGAL::Uncertain<CGAL::Sign> for intervals).
-template <class Expression>
+// (CGAL::Uncertain<CGAL::Sign> for intervals). Exact: the number type of the fallback; CGAL::Mpzf
+// (no gcd, no heap for small numbers) where the expression is sums and products of doubles.
+template <class Exact = CGAL::Exact_rational, class Expression>
 CGAL::Sign filtered_sign(const Expression& expression) {
   {
     CGAL::Protect_FPU_rounding<true> protect;
@@ -26,7 +28,7 @@ CGAL::Sign filtered_sign(const Expression& expression) {
     }
   }
   PredicateStats::add(PredicateFamily::sign, DecidedBy::exact);
-  return CGAL::make_certain(expression(std::type_identity<CGAL::Exact_rational>{}));
+  return CGAL::make_certain(expression(std::type_identity<Exact>{}));
 }
 
 }  // namespace hlr

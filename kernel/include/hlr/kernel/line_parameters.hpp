@@ -71,7 +71,7 @@ typename Geometry<K>::FT parameter_along(const typename Geometry<K>::Point& a, c
                                          const typename Geometry<K>::Point& q, const typename Geometry<K>::FT& d,
                                          bool along_x) {
   if constexpr (Geometry<K>::exact_constructions) {
-    using namespace parameter_detail;
+    using parameter_detail::Along, parameter_detail::ParameterOf;
     CGAL::Protect_FPU_rounding<true> protect;
     const auto& aa = CGAL::approx(a);
     const auto& aq = CGAL::approx(q);

@@ -1,8 +1,9 @@
 // hlr kernel, view predicates on input points: whether three model-space points (input doubles)
 // have collinear images in a view, decided from their own coordinates. The view basis is exactly
 // orthogonal to the direction d (view.hpp), so the images of p, q, r are collinear exactly when
-// det[q - p, r - p, d] = 0. Interval arithmetic decides almost every case; rationals of the doubles
-// decide the rest, far cheaper than the exact evaluation of the points' view coordinates.
+// det[q - p, r - p, d] = 0. Interval arithmetic decides almost every case; the doubles' exact sums
+// and products (CGAL::Mpzf) decide the rest, far cheaper than the exact evaluation of the points'
+// view coordinates.
 // In a perspective view the images of p, q, r are collinear exactly when p, q, r and the eye are
 // coplanar: det[q - p, r - p, e - p] = 0 (collinear_seen_from).
 //
@@ -20,6 +21,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 
 #include <array>
 
@@ -44,7 +46,7 @@ inline bool collinear_in_view(const Vec3& p, const Vec3& q, const Vec3& r, const
     const auto s = view_detail::det_with_direction<CGAL::Interval_nt<false>>(p, q, r, direction);
     if (CGAL::is_certain(s)) return CGAL::get_certain(s) == CGAL::ZERO;
   }
-  return view_detail::det_with_direction<CGAL::Exact_rational>(p, q, r, direction) == CGAL::ZERO;
+  return view_detail::det_with_direction<CGAL::Mpzf>(p, q, r, direction) == CGAL::ZERO;
 }
 
 inline bool collinear_seen_from(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& eye) {
@@ -53,7 +55,7 @@ inline bool collinear_seen_from(const Vec3& p, const Vec3& q, const Vec3& r, con
     const auto s = view_detail::det_with_direction<CGAL::Interval_nt<false>>(p, q, r, eye, true);
     if (CGAL::is_certain(s)) return CGAL::get_certain(s) == CGAL::ZERO;
   }
-  return view_detail::det_with_direction<CGAL::Exact_rational>(p, q, r, eye, true) == CGAL::ZERO;
+  return view_detail::det_with_direction<CGAL::Mpzf>(p, q, r, eye, true) == CGAL::ZERO;
 }
 
 // The plane through three input points (not collinear) in an orthographic view along d.
@@ -92,7 +94,8 @@ class ModelPlane {
 
   using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
   static int sign_of_det(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& d) {
-    return filtered_sign([&]<class NT>(std::type_identity<NT>) { return view_detail::det_with_direction<NT>(p, q, r, d); });
+    return filtered_sign<CGAL::Mpzf>(
+        [&]<class NT>(std::type_identity<NT>) { return view_detail::det_with_direction<NT>(p, q, r, d); });
   }
   static IK::Point_3 ip(const Vec3& v) { return {v[0], v[1], v[2]}; }
   // sign((b - a) × (c - a) · (p - a)): Epick's orientation, exact on doubles.

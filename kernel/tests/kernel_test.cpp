@@ -212,6 +212,94 @@ double hard_value(std::mt19937_64& random, int mode) {
   }
 }
 
+// Crossings of lines through points of doubles keep their lines (crossing_point.hpp): orientations
+// and comparisons of them and of points of doubles are decided from those doubles where the
+// intervals cannot decide. Against rationals made from the same doubles without the crossings'
+// reps: three crossings on one line (exact zeros), ties of coordinates on a grid, far from the
+// origin and of mixed magnitude; crossings of crossings take the general path and must agree too.
+TEST(ExactKernel, CrossingsDecideFromTheirLinesDoubles) {
+  using G = Geometry<ExactKernel>;
+  using EK = ExactKernel::Exact_kernel;
+  std::mt19937_64 random(20261207);
+  struct Drawn {
+    ExactKernel::Point_2 point;
+    EK::Point_2 exact;  // made from the doubles in rationals, apart from the point's rep
+    int kind;           // 0 a point of doubles, 1 a crossing of lines through such points, 2 other
+  };
+  auto double_point = [&](int mode) {
+    const double x = hard_value(random, mode), y = hard_value(random, mode);
+    return Drawn{G::point(x, y), EK::Point_2(x, y), 0};
+  };
+  auto crossing_of = [&](const Drawn& a, const Drawn& b, const Drawn& c, const Drawn& d) -> std::optional<Drawn> {
+    if (a.exact == b.exact || c.exact == d.exact || CGAL::is_zero(CGAL::determinant(b.exact - a.exact, d.exact - c.exact)))
+      return std::nullopt;
+    return Drawn{G::line_intersection(a.point, b.point, c.point, d.point),
+                 LineCrossing<EK>()(a.exact, b.exact, c.exact, d.exact),
+                 a.kind == 0 && b.kind == 0 && c.kind == 0 && d.kind == 0 ? 1 : 2};
+  };
+  // A crossing of the line u v with a random line through points of doubles.
+  auto on_line = [&](const Drawn& u, const Drawn& v, int mode) {
+    for (;;)
+      if (auto c = crossing_of(u, v, double_point(mode), double_point(mode))) return *c;
+  };
+  std::size_t zeros = 0, ties = 0, by_doubles = 0, general = 0;
+  for (int i = 0; i < 6000; ++i) {
+    const int mode = i % 4;
+    Drawn u = double_point(mode), v = double_point(mode);
+    while (u.exact == v.exact) v = double_point(mode);
+    std::array<Drawn, 3> p;
+    switch (i / 4 % 4) {
+      case 0:  // three crossings on the line u v
+        for (auto& d : p) d = on_line(u, v, mode);
+        break;
+      case 1:  // u, v and a crossing on their line
+        p = {u, v, on_line(u, v, mode)};
+        break;
+      case 2:  // a crossing of two crossings' line: the general path
+        p[0] = on_line(u, v, mode);
+        p[1] = on_line(u, v, mode);
+        p[2] = double_point(mode);
+        if (auto c = crossing_of(p[0], p[2], u, double_point(mode))) p[2] = *c;
+        break;
+      default:  // crossings of random lines
+        for (auto& d : p)
+          for (;;)
+            if (auto c = crossing_of(double_point(mode), double_point(mode), double_point(mode), double_point(mode))) {
+              d = *c;
+              break;
+            }
+    }
+    const int want = static_cast<int>(CGAL::orientation(p[0].exact, p[1].exact, p[2].exact));
+    zeros += want == 0;
+    ASSERT_EQ(G::orientation(p[0].point, p[1].point, p[2].point), want) << i;
+    const auto direct = orientation_from_doubles(p[0].point, p[1].point, p[2].point);
+    if (p[0].kind < 2 && p[1].kind < 2 && p[2].kind < 2) {
+      ASSERT_TRUE(direct.has_value()) << i;
+      ++by_doubles;
+    } else {
+      ++general;
+    }
+    if (direct) ASSERT_EQ(*direct, want) << i;
+    for (int j = 0; j < 3; ++j) {
+      const Drawn &a = p[j], &b = p[(j + 1) % 3];
+      const int want_x = static_cast<int>(CGAL::compare_x(a.exact, b.exact));
+      const int want_y = static_cast<int>(CGAL::compare_y(a.exact, b.exact));
+      ties += want_x == 0 || want_y == 0;
+      ASSERT_EQ(G::compare_x(a.point, b.point), want_x) << i;
+      ASSERT_EQ(G::compare_y(a.point, b.point), want_y) << i;
+      ASSERT_EQ(G::compare_xy(a.point, b.point), static_cast<int>(CGAL::compare_xy(a.exact, b.exact))) << i;
+      if (const auto c = compare_from_doubles(a.point, b.point, 0)) ASSERT_EQ(*c, want_x) << i;
+      if (const auto c = compare_from_doubles(a.point, b.point, 1)) ASSERT_EQ(*c, want_y) << i;
+    }
+    // The exact point a crossing evaluates to: from its homogeneous coordinates, one division each.
+    for (const Drawn& d : p) ASSERT_EQ(CGAL::exact(d.point), d.exact) << i;
+  }
+  EXPECT_GT(zeros, 2000u) << "the draws must hit exact zeros";
+  EXPECT_GT(ties, 500u) << "the draws must hit ties of coordinates";
+  EXPECT_GT(by_doubles, 3000u);
+  EXPECT_GT(general, 500u);
+}
+
 // PlaneSide's static bound: a decided side must be the exact one (the determinant in rationals),
 // for points on the plane (exact zeros), an ulp off it, and ordinary ones, with coordinates random,
 // on a coarse grid, far from the origin and of mixed magnitude; ordinary cases (not exactly on the plane) it must settle itself.

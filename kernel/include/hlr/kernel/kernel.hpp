@@ -8,6 +8,7 @@
 // runs on all three. Every robustness decision lives here, not in the algorithms.
 #pragma once
 
+#include <hlr/kernel/crossing_point.hpp>
 #include <hlr/kernel/exact_parameter.hpp>
 #include <hlr/kernel/interval_orientation.hpp>
 
@@ -121,24 +122,6 @@ struct ExactTypeOf<FT, std::void_t<typename FT::Exact_type>> {
   using type = typename FT::Exact_type;
 };
 
-// The crossing of the line through a, b with the line through c, d, in the arithmetic of
-// `Kernel` (CGAL's interval or exact kernel): Epeck's line_intersection as one lazy construction.
-// On intervals, a denominator that may be zero throws CGAL's uncertain-conversion exception, and
-// the lazy construction then computes the point exactly at once, as CGAL's own does.
-template <class Kernel>
-struct LineCrossing {
-  using result_type = typename Kernel::Point_2;
-  result_type operator()(const result_type& a, const result_type& b, const result_type& c,
-                         const result_type& d) const {
-    using T = typename Kernel::FT;
-    const T abx = b.x() - a.x(), aby = b.y() - a.y(), cdx = d.x() - c.x(), cdy = d.y() - c.y();
-    const T den = abx * cdy - aby * cdx;
-    if (den == 0) throw std::runtime_error("line_intersection: lines are parallel");
-    const T t = ((c.x() - a.x()) * cdy - (c.y() - a.y()) * cdx) / den;
-    return result_type(a.x() + t * abx, a.y() + t * aby);
-  }
-};
-
 template <class K>
 struct CgalGeometry {
   using FT = typename K::FT;
@@ -191,19 +174,24 @@ struct CgalGeometry {
         PredicateStats::add(PredicateFamily::orientation, DecidedBy::interval);
         return o;
       }
-      const bool doubles = is_double(ia) && is_double(ib) && is_double(ic);
-      if (PredicateStats::enabled) {
+      auto record = [&](DecidedBy by) {
+        if (!PredicateStats::enabled) return;
         CGAL::Protect_FPU_rounding<true> protect;
         const auto o = CGAL::orientation(ia, ib, ic);
-        PredicateStats::add(PredicateFamily::orientation, CGAL::is_certain(o) ? DecidedBy::interval
-                                                          : doubles           ? DecidedBy::doubles
-                                                                              : DecidedBy::exact);
-      }
-      if (doubles) {
+        PredicateStats::add(PredicateFamily::orientation, CGAL::is_certain(o) ? DecidedBy::interval : by);
+      };
+      if (is_double(ia) && is_double(ib) && is_double(ic)) {
+        record(DecidedBy::doubles);
         using E = EpickKernel::Point_2;
         return static_cast<int>(CGAL::orientation(E(ia.x().inf(), ia.y().inf()), E(ib.x().inf(), ib.y().inf()),
                                                   E(ic.x().inf(), ic.y().inf())));
       }
+      // Crossings of lines through points of doubles (crossing_point.hpp): exact without rationals.
+      if (const auto o = orientation_from_doubles(a, b, c)) {
+        record(DecidedBy::doubles);
+        return *o;
+      }
+      record(DecidedBy::exact);
     }
     return static_cast<int>(CGAL::orientation(a, b, c));
   }
@@ -214,6 +202,7 @@ struct CgalGeometry {
       if (same(a, b)) return counted(DecidedBy::identity, 0);
       const int c = compare_intervals(CGAL::approx(a).x(), CGAL::approx(b).x());
       if (c != 2) return counted(DecidedBy::interval, c);
+      if (const auto d = compare_from_doubles(a, b, 0)) return counted(DecidedBy::doubles, *d);
       PredicateStats::add(PredicateFamily::comparison, DecidedBy::exact);
     }
     return static_cast<int>(CGAL::compare_x(a, b));
@@ -223,6 +212,7 @@ struct CgalGeometry {
       if (same(a, b)) return counted(DecidedBy::identity, 0);
       const int c = compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y());
       if (c != 2) return counted(DecidedBy::interval, c);
+      if (const auto d = compare_from_doubles(a, b, 1)) return counted(DecidedBy::doubles, *d);
       PredicateStats::add(PredicateFamily::comparison, DecidedBy::exact);
     }
     return static_cast<int>(CGAL::compare_y(a, b));
@@ -236,6 +226,7 @@ struct CgalGeometry {
         const int d = compare_intervals(CGAL::approx(a).y(), CGAL::approx(b).y());
         if (d != 2) return counted(DecidedBy::interval, d);
       }
+      if (const auto d = compare_from_doubles(a, b, 2)) return counted(DecidedBy::doubles, *d);
       PredicateStats::add(PredicateFamily::comparison, DecidedBy::exact);
     }
     return static_cast<int>(CGAL::compare_xy(a, b));
@@ -268,22 +259,31 @@ struct CgalGeometry {
   }
 
   // The intersection of the line through a, b with the line through c, d (not parallel).
-  // On the exact kernel, where a line is known to be axis-parallel (its points' coordinates are one
-  // double), the crossing takes that coordinate itself rather than a construction equal to it, so
-  // that crossings along the line (a strip border) compare without exact arithmetic.
-  // On the exact kernel the crossing is one lazy node made from the four points (LineCrossing),
-  // not lines and an intersection object over them: fewer nodes to allocate, and one to evaluate
-  // where a predicate needs the point exactly.
+  // On the exact kernel the crossing is one lazy point that keeps the four points
+  // (crossing_point.hpp), whose predicates need no rationals where those are points of doubles.
+  // Where a line is known to be axis-parallel (its points' coordinates are one double), the
+  // crossing's interval takes that coordinate itself, so that crossings along the line (a strip
+  // border) compare without exact arithmetic.
   static Point line_intersection(const Point& a, const Point& b, const Point& c, const Point& d) {
     if constexpr (exact_constructions) {
-      using Crossing = CGAL::Lazy_construction<K, LineCrossing<typename K::Approximate_kernel>,
-                                               LineCrossing<typename K::Exact_kernel>>;
-      const Point p = Crossing()(a, b, c, d);
       const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b), &ic = CGAL::approx(c), &id = CGAL::approx(d);
+      typename K::Approximate_kernel::Point_2 approx;
+      try {
+        CGAL::Protect_FPU_rounding<true> protect;
+        approx = LineCrossing<typename K::Approximate_kernel>()(ia, ib, ic, id);
+      } catch (const CGAL::Uncertain_conversion_exception&) {
+        // The intervals cannot tell the lines apart from parallel ones: CGAL's lazy construction
+        // computes the point exactly at once.
+        using Crossing = CGAL::Lazy_construction<K, LineCrossing<typename K::Approximate_kernel>,
+                                                 LineCrossing<typename K::Exact_kernel>>;
+        return Crossing()(a, b, c, d);
+      }
       const bool ax = compare_intervals(ia.x(), ib.x()) == 0, cx = compare_intervals(ic.x(), id.x()) == 0;
       const bool ay = compare_intervals(ia.y(), ib.y()) == 0, cy = compare_intervals(ic.y(), id.y()) == 0;
-      if (ax || cx || ay || cy) return Point(ax ? a.x() : cx ? c.x() : p.x(), ay ? a.y() : cy ? c.y() : p.y());
-      return p;
+      if (ax || cx || ay || cy)
+        approx = typename K::Approximate_kernel::Point_2(ax ? ia.x() : cx ? ic.x() : approx.x(),
+                                                         ay ? ia.y() : cy ? ic.y() : approx.y());
+      return crossing_point(approx, {a, b, c, d});
     } else {
       typename K::Line_2 l1(a, b), l2(c, d);
       auto result = CGAL::intersection(l1, l2);

@@ -13,6 +13,8 @@
 // their support lines).
 #pragma once
 
+#include <hlr/kernel/lazy_rep.hpp>
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Mpzf.h>
 
@@ -49,11 +51,6 @@ using LazyPoint2 = CGAL::Lazy_rep<ApproxPoint2, Epeck::Exact_kernel::Point_2, Ep
 using Z = CGAL::Mpzf;
 using Homogeneous = std::array<Z, 3>;  // (X, Y, W), W != 0: the point (X / W, Y / W)
 
-// An interval point of one double per coordinate: that double is then its exact value.
-inline bool is_double(const ApproxPoint2& p) {
-  return p.x().inf() == p.x().sup() && p.y().inf() == p.y().sup();
-}
-
 class CrossingPointRep final : public LazyPoint2 {
  public:
   // `approx` holds the crossing of the lines a b and c d.
@@ -65,7 +62,7 @@ class CrossingPointRep final : public LazyPoint2 {
     std::array<double, 8> v;
     for (int i = 0; i < 4; ++i) {
       const ApproxPoint2& p = CGAL::approx(points_[i]);
-      if (!is_double(p)) return std::nullopt;
+      if (!is_double_point(p)) return std::nullopt;
       v[2 * i] = p.x().inf();
       v[2 * i + 1] = p.y().inf();
     }
@@ -100,10 +97,8 @@ class CrossingPointRep final : public LazyPoint2 {
 // it is a crossing of lines through points of doubles; else nothing.
 inline std::optional<Homogeneous> homogeneous_of(const Point2& p) {
   const ApproxPoint2& a = CGAL::approx(p);
-  if (is_double(a)) return Homogeneous{Z(a.x().inf()), Z(a.y().inf()), Z(1)};
-  // CGAL's Lazy keeps its rep pointer private; Handle hands it out untyped (for Compact_container).
-  const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(p).for_compact_container());
-  const auto* crossing = dynamic_cast<const CrossingPointRep*>(rep);
+  if (is_double_point(a)) return Homogeneous{Z(a.x().inf()), Z(a.y().inf()), Z(1)};
+  const auto* crossing = rep_as<CrossingPointRep>(p);
   return crossing ? crossing->homogeneous() : std::nullopt;
 }
 

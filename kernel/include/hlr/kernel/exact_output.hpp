@@ -12,6 +12,7 @@
 // double takes a few multiplications. It is the same exact number, so the same double.
 #pragma once
 
+#include <hlr/kernel/lazy_rep.hpp>
 #include <hlr/kernel/view.hpp>
 
 #include <CGAL/Mpzf.h>
@@ -76,9 +77,7 @@ class RecipePointRep final : public LazyPoint3 {
 
 // p's rep when lazy_point made it, else null.
 inline const RecipePointRep* recipe_rep(const ExactKernel::Point_3& p) {
-  // CGAL's Lazy keeps its rep pointer private; Handle hands it out untyped (for Compact_container).
-  const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(p).for_compact_container());
-  return dynamic_cast<const RecipePointRep*>(rep);
+  return rep_as<RecipePointRep>(p);
 }
 }  // namespace exact_output_detail
 

@@ -10,6 +10,8 @@
 // take a few multiplications: the same exact numbers, so the same doubles.
 #pragma once
 
+#include <hlr/kernel/lazy_rep.hpp>
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Mpzf.h>
 
@@ -128,11 +130,7 @@ class ParameterOf final : public ParameterRep {
   std::array<Point2, N> points_;
 };
 
-inline const ParameterRep* parameter_rep(const CGAL::Epeck::FT& t) {
-  // CGAL's Lazy keeps its rep pointer private; Handle hands it out untyped (for Compact_container).
-  const auto* rep = static_cast<const CGAL::Rep*>(static_cast<const CGAL::Handle&>(t).for_compact_container());
-  return dynamic_cast<const ParameterRep*>(rep);
-}
+inline const ParameterRep* parameter_rep(const CGAL::Epeck::FT& t) { return rep_as<ParameterRep>(t); }
 // t = num / den in Mpzf, when t is a parameter whose points are doubles; else nothing.
 inline std::optional<std::array<CGAL::Mpzf, 2>> quotient_of(const CGAL::Epeck::FT& t) {
   const ParameterRep* rep = parameter_rep(t);

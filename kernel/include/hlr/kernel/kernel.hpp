@@ -11,6 +11,7 @@
 #include <hlr/kernel/crossing_point.hpp>
 #include <hlr/kernel/exact_parameter.hpp>
 #include <hlr/kernel/interval_orientation.hpp>
+#include <hlr/kernel/lazy_rep.hpp>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -247,7 +248,7 @@ struct CgalGeometry {
   // Whether an interval point is one point of doubles: its approximation is then its exact value.
   template <class IntervalPoint>
   static bool is_double(const IntervalPoint& p) {
-    return p.x().inf() == p.x().sup() && p.y().inf() == p.y().sup();
+    return is_double_point(p);
   }
   // -1 or +1 when the intervals are apart, 0 when both are the same single number, 2 otherwise.
   template <class Interval>

@@ -156,7 +156,7 @@ LineDrawing solve(const Scene& scene, const View& view, const SceneIntersections
       const hidden_line::ShadowResult& result = options.shadows ? *options.shadows : *own;
       auto rounded = [&](const clip::Contour<K>& c) {
         std::vector<std::array<double, 2>> points;
-        for (const auto& q : c.points) points.push_back({frame.rounded(q.x(), 0), frame.rounded(q.y(), 1)});
+        for (const auto& q : c.points) points.push_back({frame.rounded(q, 0), frame.rounded(q, 1)});
         return points;
       };
       for (const auto& piece : hidden_line::shadows_in_view(result, frame, solution->sources, solution->map)) {
@@ -250,7 +250,7 @@ RasterRun draw_raster(const Scene& scene, const View& view, const hidden_line::R
 
 struct SurfacesSolution::Impl {
   virtual ~Impl() = default;
-  virtual std::string json(bool exact) const = 0;
+  virtual std::string json(bool exact, double written_before) const = 0;
   virtual std::string svg() const = 0;
   Summary summary;
   StageTimes times;
@@ -265,7 +265,11 @@ struct SurfacesImpl final : SurfacesSolution::Impl {
   SurfacesDocument<K> document() const {
     return {scene.input, scene.meshes, solution.frame, solution.sources, solution.map, kernel, times};
   }
-  std::string json(bool exact) const override { return surfaces_json(document(), exact); }
+  std::string json(bool exact, double written_before) const override {
+    SurfacesDocument<K> doc = document();
+    doc.times.write = written_before;
+    return surfaces_json(doc, exact);
+  }
   std::string svg() const override { return surfaces_svg(document()); }
   const Scene& scene;
   hidden_line::ViewSolution<K> solution;
@@ -273,7 +277,7 @@ struct SurfacesImpl final : SurfacesSolution::Impl {
 
 }  // namespace
 
-std::string SurfacesSolution::json(bool exact) const { return impl_->json(exact); }
+std::string SurfacesSolution::json(bool exact, double written_before) const { return impl_->json(exact, written_before); }
 std::string SurfacesSolution::svg() const { return impl_->svg(); }
 const SurfacesSolution::Summary& SurfacesSolution::summary() const { return impl_->summary; }
 const StageTimes& SurfacesSolution::times() const { return impl_->times; }

@@ -94,8 +94,8 @@ LineDrawing make_drawing(const InputInfo& input, const ViewFrame<K>& frame, Kern
         a = {pa[0], pa[1]};
         b = {pb[0], pb[1]};
       } else {
-        a = {frame.rounded(G::x(s.a), 0), frame.rounded(G::y(s.a), 1)};
-        b = {frame.rounded(G::x(s.b), 0), frame.rounded(G::y(s.b), 1)};
+        a = {frame.rounded(s.a, 0), frame.rounded(s.a, 1)};
+        b = {frame.rounded(s.b, 0), frame.rounded(s.b, 1)};
       }
       d.segments[i] = {a, b, s.visible, s.mesh, s.meeting_degrees, s.line, -1, s.thin};
     }

@@ -719,7 +719,7 @@ class LightSolver {
     const double dx = axis < 0 ? 0 : 2.5 * (axis % 3), dy = axis < 0 ? 0 : -2.5 * (axis / 3);
     auto rounded = [&](const clip::Contour<K>& c) {
       std::vector<std::array<double, 2>> out;
-      for (const P2& q : c.points) out.push_back({frame.rounded(q.x(), 0) + dx, frame.rounded(q.y(), 1) + dy});
+      for (const P2& q : c.points) out.push_back({frame.rounded(q, 0) + dx, frame.rounded(q, 1) + dy});
       return out;
     };
     for (const auto& v : map.visible) {

@@ -217,19 +217,51 @@ double hard_value(std::mt19937_64& random, int mode) {
 // intervals cannot decide. Against rationals made from the same doubles without the crossings'
 // reps: three crossings on one line (exact zeros), ties of coordinates on a grid, far from the
 // origin and of mixed magnitude; crossings of crossings take the general path and must agree too.
+// Half the draws take image points of input points in a general view (iso and random directions)
+// instead of points of doubles, which keep their coordinates (CoordinatePointRep); every point's
+// rounded coordinates (G::to_double(p, axis)) must be the nearest doubles of the exact ones.
 TEST(ExactKernel, CrossingsDecideFromTheirLinesDoubles) {
   using G = Geometry<ExactKernel>;
   using EK = ExactKernel::Exact_kernel;
+  using Q = EK::FT;
   std::mt19937_64 random(20261207);
+  std::uniform_real_distribution<double> unit(-1, 1);
   struct Drawn {
     ExactKernel::Point_2 point;
     EK::Point_2 exact;  // made from the doubles in rationals, apart from the point's rep
-    int kind;           // 0 a point of doubles, 1 a crossing of lines through such points, 2 other
+    int kind;           // 0 a point of doubles or an input point's image, 1 a crossing of lines through such points, 2 other
   };
+  std::optional<ViewFrame<ExactKernel>> frame;  // set: points are images of input points
+  std::array<Q, 3> rows[2];                      // the frame's X and Y in rationals
   auto double_point = [&](int mode) {
-    const double x = hard_value(random, mode), y = hard_value(random, mode);
-    return Drawn{G::point(x, y), EK::Point_2(x, y), 0};
+    if (!frame) {
+      const double x = hard_value(random, mode), y = hard_value(random, mode);
+      return Drawn{G::point(x, y), EK::Point_2(x, y), 0};
+    }
+    const Vec3 p{hard_value(random, mode), hard_value(random, mode), hard_value(random, mode)};
+    const auto v = frame->to_view(p);
+    Q c[2];
+    for (int k = 0; k < 2; ++k) c[k] = rows[k][0] * Q(p[0]) + rows[k][1] * Q(p[1]) + rows[k][2] * Q(p[2]);
+    return Drawn{G::point(v.x, v.y), EK::Point_2(c[0], c[1]), 0};
   };
+  auto set_frame = [&](int i, int mode) {
+    frame.reset();
+    if (i % 8 < 4) return;
+    View view;
+    do {
+      if (i % 2) named_view("iso", view);
+      else view.direction = {hard_value(random, mode), hard_value(random, mode), hard_value(random, mode)},
+           view.up = {unit(random), unit(random), unit(random)};
+    } while (view_defect(view));
+    frame.emplace(view);
+    auto cross = [](const std::array<Q, 3>& a, const std::array<Q, 3>& b) {
+      return std::array<Q, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    const std::array<Q, 3> d{view.direction[0], view.direction[1], view.direction[2]};
+    rows[0] = cross(d, {Q(view.up[0]), Q(view.up[1]), Q(view.up[2])});
+    rows[1] = cross(rows[0], d);
+  };
+  auto nearest = [](const Q& e) { return G::to_double(ExactKernel::FT(e)); };  // a plain rep: the general path
   auto crossing_of = [&](const Drawn& a, const Drawn& b, const Drawn& c, const Drawn& d) -> std::optional<Drawn> {
     if (a.exact == b.exact || c.exact == d.exact || CGAL::is_zero(CGAL::determinant(b.exact - a.exact, d.exact - c.exact)))
       return std::nullopt;
@@ -242,9 +274,11 @@ TEST(ExactKernel, CrossingsDecideFromTheirLinesDoubles) {
     for (;;)
       if (auto c = crossing_of(u, v, double_point(mode), double_point(mode))) return *c;
   };
-  std::size_t zeros = 0, ties = 0, by_doubles = 0, general = 0;
-  for (int i = 0; i < 6000; ++i) {
+  std::size_t zeros = 0, ties = 0, by_doubles = 0, general = 0, images = 0;
+  for (int i = 0; i < 8000; ++i) {
     const int mode = i % 4;
+    set_frame(i, mode);
+    images += frame.has_value();
     Drawn u = double_point(mode), v = double_point(mode);
     while (u.exact == v.exact) v = double_point(mode);
     std::array<Drawn, 3> p;
@@ -268,6 +302,10 @@ TEST(ExactKernel, CrossingsDecideFromTheirLinesDoubles) {
               d = *c;
               break;
             }
+    }
+    for (const Drawn& d : p) {  // before a predicate may have evaluated the point exactly
+      ASSERT_EQ(G::to_double(d.point, 0), nearest(d.exact.x())) << i;
+      ASSERT_EQ(G::to_double(d.point, 1), nearest(d.exact.y())) << i;
     }
     const int want = static_cast<int>(CGAL::orientation(p[0].exact, p[1].exact, p[2].exact));
     zeros += want == 0;
@@ -296,8 +334,9 @@ TEST(ExactKernel, CrossingsDecideFromTheirLinesDoubles) {
   }
   EXPECT_GT(zeros, 2000u) << "the draws must hit exact zeros";
   EXPECT_GT(ties, 500u) << "the draws must hit ties of coordinates";
-  EXPECT_GT(by_doubles, 3000u);
+  EXPECT_GT(by_doubles, 4000u);
   EXPECT_GT(general, 500u);
+  EXPECT_EQ(images, 4000u);
 }
 
 // PlaneSide's static bound: a decided side must be the exact one (the determinant in rationals),
@@ -437,6 +476,12 @@ TEST(ExactKernel, ViewCoordinatesAreTheExactDotProducts) {
     for (int k = 0; k < 3; ++k) {
       const auto approx = CGAL::to_interval(*coordinates[k]);  // before the exact value is asked for
       const Q want = (*rows[k])[0] * Q(p[0]) + (*rows[k])[1] * Q(p[1]) + (*rows[k])[2] * Q(p[2]);
+      // Its quotient (lazy_rep.hpp), the same number in Mpzf, and its rounding from it.
+      const auto quotient = quotient_of(*coordinates[k]);
+      ASSERT_TRUE(quotient.has_value()) << i << " axis " << k;
+      ASSERT_EQ(Q((*quotient)[0]) / Q((*quotient)[1]), want) << i << " axis " << k;
+      ASSERT_EQ(Geometry<ExactKernel>::to_double(*coordinates[k]), Geometry<ExactKernel>::to_double(ExactKernel::FT(want)))
+          << i << " axis " << k;
       ASSERT_EQ(Q(coordinates[k]->exact()), want) << i << " axis " << k;
       ASSERT_LE(Q(approx.first), want) << i << " axis " << k;
       ASSERT_GE(Q(approx.second), want) << i << " axis " << k;
@@ -450,6 +495,7 @@ TEST(ExactKernel, ViewCoordinatesAreTheExactDotProducts) {
       const auto approx = CGAL::to_interval(*constructed[k]);
       const Q mid[3] = {(Q(p[0]) + Q(q[0])) / 2, (Q(p[1]) + Q(q[1])) / 2, (Q(p[2]) + Q(q[2])) / 2};
       const Q want = (*rows[k])[0] * mid[0] + (*rows[k])[1] * mid[1] + (*rows[k])[2] * mid[2];
+      ASSERT_FALSE(quotient_of(*constructed[k]).has_value()) << i << " axis " << k;
       ASSERT_EQ(Q(constructed[k]->exact()), want) << i << " axis " << k;
       ASSERT_LE(Q(approx.first), want) << i << " axis " << k;
       ASSERT_GE(Q(approx.second), want) << i << " axis " << k;
@@ -658,7 +704,7 @@ TEST(ExactParameter, AgreesWithTheLazyConstructionAndRoundsAsToDouble) {
     auto check = [&](const FT& t, const FT& old, const ET& num, const ET& den) {
       ASSERT_TRUE(same_interval(t, old)) << i;
       const ET exact = num / den;
-      const auto* rep = parameter_detail::parameter_rep(t);
+      const auto* rep = rep_as<QuotientRep>(t);
       ASSERT_NE(rep, nullptr);
       (rep->quotient() ? by_quotient : general) += 1;
       // Rounded before anything evaluates t exactly, then its value.

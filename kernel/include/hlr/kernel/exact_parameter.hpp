@@ -10,6 +10,7 @@
 // take a few multiplications: the same exact numbers, so the same doubles.
 #pragma once
 
+#include <hlr/kernel/crossing_point.hpp>
 #include <hlr/kernel/lazy_rep.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -69,39 +70,40 @@ std::array<T, 2> along(const T& a, const T& b, const T& q) {
   return {q - a, b - a};
 }
 
-// A parameter's lazy rep: its interval is the one CGAL's lazy construction would give (the caller
-// makes it with the same operations), and it keeps the points, so that its exact value, and its
-// rounding, can be had from their doubles when their intervals say that they are doubles.
-class ParameterRep : public CGAL::Lazy_exact_nt_rep<ET> {
- public:
-  using CGAL::Lazy_exact_nt_rep<ET>::Lazy_exact_nt_rep;
-  // t = num / den in Mpzf, when every coordinate it is made of is a double; else nothing.
-  virtual std::optional<std::array<CGAL::Mpzf, 2>> quotient() const = 0;
-};
-
 enum class Along : std::uint8_t { crossing, x, y };
 
+// A parameter's lazy rep: its interval is the one CGAL's lazy construction would give (the caller
+// makes it with the same operations), and it keeps the points, so that its exact value, and its
+// rounding, can be had from their doubles when they are points of doubles or image points of input
+// vertices (crossing_point.hpp's affine_of).
 template <Along kind>
-class ParameterOf final : public ParameterRep {
+class ParameterOf final : public QuotientRep {
   static constexpr std::size_t N = kind == Along::crossing ? 4 : 3;
 
  public:
   // Crossing: a, b, c, d; along an axis: a, b, q.
   ParameterOf(const CGAL::Interval_nt<false>& approx, std::array<Point2, N> points)
-      : ParameterRep(approx), points_(std::move(points)) {}
+      : QuotientRep(approx), points_(std::move(points)) {}
 
   std::optional<std::array<CGAL::Mpzf, 2>> quotient() const override {
     std::array<double, 2 * N> v;
-    for (std::size_t i = 0; i < N; ++i) {
+    bool doubles = true;
+    for (std::size_t i = 0; i < N && doubles; ++i) {
       const auto& p = CGAL::approx(points_[i]);
       for (int k = 0; k < 2; ++k) {
         if ((kind == Along::x && k == 1) || (kind == Along::y && k == 0)) continue;
         const auto& c = k == 0 ? p.x() : p.y();
-        if (c.inf() != c.sup()) return std::nullopt;  // an interval of one double holds that double
+        if (c.inf() != c.sup()) doubles = false;  // an interval of one double holds that double
         v[2 * i + k] = c.inf();
       }
     }
-    return terms<CGAL::Mpzf>([&](std::size_t i, int k) { return CGAL::Mpzf(v[2 * i + k]); });
+    if (doubles) return terms<CGAL::Mpzf>([&](std::size_t i, int k) { return CGAL::Mpzf(v[2 * i + k]); });
+    // Image points of input vertices in a general view: their coordinates in Mpzf.
+    std::array<crossing_detail::Homogeneous, N> own;
+    std::array<const crossing_detail::Homogeneous*, N> z;
+    for (std::size_t i = 0; i < N; ++i)
+      if (!(z[i] = crossing_detail::affine_of(points_[i], own[i]))) return std::nullopt;
+    return terms<CGAL::Mpzf>([&](std::size_t i, int k) -> const CGAL::Mpzf& { return (*z[i])[k]; });
   }
 
   void update_exact() const override {
@@ -130,34 +132,40 @@ class ParameterOf final : public ParameterRep {
   std::array<Point2, N> points_;
 };
 
-inline const ParameterRep* parameter_rep(const CGAL::Epeck::FT& t) { return rep_as<ParameterRep>(t); }
-// t = num / den in Mpzf, when t is a parameter whose points are doubles; else nothing.
-inline std::optional<std::array<CGAL::Mpzf, 2>> quotient_of(const CGAL::Epeck::FT& t) {
-  const ParameterRep* rep = parameter_rep(t);
-  return rep ? rep->quotient() : std::nullopt;
-}
-
 }  // namespace parameter_detail
 
-// The double nearest to t, when t is a parameter whose points are doubles; else nothing.
-inline std::optional<double> nearest_parameter(const CGAL::Epeck::FT& t) {
-  const auto q = parameter_detail::quotient_of(t);
+// The double nearest to v, when v keeps a quotient of doubles (lazy_rep.hpp's QuotientRep: a
+// parameter whose points are doubles, a view coordinate of an input point); else nothing.
+inline std::optional<double> nearest_by_quotient(const CGAL::Epeck::FT& v) {
+  const auto q = quotient_of(v);
   if (!q) return std::nullopt;
   return nearest_quotient((*q)[0], (*q)[1]);
 }
 
-// The double nearest to a + t (b − a), when a and b are doubles and t a parameter whose points
-// are; else nothing.
+// The double nearest to a + t (b − a), when a, b and t are each a double or keep a quotient of
+// doubles; else nothing.
 inline std::optional<double> nearest_between(const CGAL::Epeck::FT& a, const CGAL::Epeck::FT& b,
                                              const CGAL::Epeck::FT& t) {
-  const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b);
-  if (ia.inf() != ia.sup() || ib.inf() != ib.sup()) return std::nullopt;
-  const auto q = parameter_detail::quotient_of(t);
-  if (!q) return std::nullopt;
   using Z = CGAL::Mpzf;
+  const auto q = quotient_of(t);
+  if (!q) return std::nullopt;
   const auto& [num, den] = *q;
-  const Z za(ia.inf());
-  return nearest_quotient(za * den + num * (Z(ib.inf()) - za), den);
+  const auto &ia = CGAL::approx(a), &ib = CGAL::approx(b);
+  if (ia.inf() == ia.sup() && ib.inf() == ib.sup()) {
+    const Z za(ia.inf());
+    return nearest_quotient(za * den + num * (Z(ib.inf()) - za), den);
+  }
+  // a = na / da, b = nb / db: (na db den + num (nb da − na db)) / (da db den).
+  auto part = [](const CGAL::Epeck::FT& v, const CGAL::Interval_nt<false>& i) -> std::optional<std::array<Z, 2>> {
+    if (i.inf() == i.sup()) return std::array<Z, 2>{Z(i.inf()), Z(1)};
+    return quotient_of(v);
+  };
+  const auto pa = part(a, ia), pb = part(b, ib);
+  if (!pa || !pb) return std::nullopt;
+  const auto &[na, da] = *pa;
+  const auto &[nb, db] = *pb;
+  const Z na_db = na * db;
+  return nearest_quotient(na_db * den + num * (nb * da - na_db), da * db * den);
 }
 
 }  // namespace hlr

@@ -147,7 +147,17 @@ struct CgalGeometry {
   }
 
   static Point point(double x, double y) { return Point(x, y); }
-  static Point point(const FT& x, const FT& y) requires(!std::is_same_v<FT, double>) { return Point(x, y); }
+  // On the exact kernel, a point whose coordinates keep quotients of doubles (an input vertex's image
+  // in a general view) keeps them (crossing_point.hpp's coordinate_point), for predicates decided
+  // without rationals.
+  static Point point(const FT& x, const FT& y) requires(!std::is_same_v<FT, double>) {
+    if constexpr (exact_constructions) {
+      const auto &ix = CGAL::approx(x), &iy = CGAL::approx(y);
+      if (ix.inf() != ix.sup() || iy.inf() != iy.sup())
+        if (auto p = coordinate_point(x, y)) return std::move(*p);
+    }
+    return Point(x, y);
+  }
   static int sign(const FT& v) {
     if constexpr (exact_constructions)
       if (PredicateStats::enabled) {
@@ -273,8 +283,9 @@ struct CgalGeometry {
         CGAL::Protect_FPU_rounding<true> protect;
         approx = LineCrossing<typename K::Approximate_kernel>()(ia, ib, ic, id);
       } catch (const CGAL::Uncertain_conversion_exception&) {
-        // The intervals cannot tell the lines apart from parallel ones: CGAL's lazy construction
-        // computes the point exactly at once.
+        // The intervals cannot tell the lines apart from parallel ones: the point computed exactly
+        // at once, from the points' doubles where it can be, else by CGAL's lazy construction.
+        if (auto p = crossing_point_from_doubles({a, b, c, d})) return std::move(*p);
         using Crossing = CGAL::Lazy_construction<K, LineCrossing<typename K::Approximate_kernel>,
                                                  LineCrossing<typename K::Exact_kernel>>;
         return Crossing()(a, b, c, d);
@@ -317,11 +328,23 @@ struct CgalGeometry {
     if constexpr (exact_constructions) {
       const std::pair<double, double> approx = CGAL::to_interval(v);
       if (approx.first == approx.second) return approx.first;
-      if (const auto d = nearest_parameter(v)) return *d;
+      if (const auto d = nearest_by_quotient(v)) return *d;
       return nearest_double(CGAL::exact(v));
     } else {
       return CGAL::to_double(v);
     }
+  }
+  // to_double of p's x (axis 0) or y (axis 1), from p's homogeneous coordinates in Mpzf where it
+  // has them (crossing_point.hpp), without evaluating p in rationals.
+  static double to_double(const Point& p, int axis) {
+    if constexpr (exact_constructions) {
+      const auto& c = axis == 0 ? CGAL::approx(p).x() : CGAL::approx(p).y();
+      if (c.inf() == c.sup()) return c.inf();
+      crossing_detail::Homogeneous own;
+      if (const auto* h = crossing_detail::homogeneous_of(p, own))
+        if (const auto d = nearest_quotient((*h)[axis], (*h)[2])) return *d;
+    }
+    return to_double(axis == 0 ? p.x() : p.y());
   }
   // to_double(a + t (b - a)), the point at t of the segment from a to b, without lazy nodes for
   // it: output rounds every inner point of every line, and each lazy node evaluated exactly costs
@@ -419,6 +442,7 @@ struct Geometry<DoubleKernel> {
   }
   static bool same_number(double, double) { return false; }
   static double to_double(double v) { return v; }
+  static double to_double(const Point& p, int axis) { return axis == 0 ? p.x : p.y; }
   static double to_double_between(double a, double b, double t) { return a + t * (b - a); }
   static double rough_double(double v) { return v; }
   static std::pair<double, double> interval(double v) { return {v, v}; }

@@ -1,8 +1,14 @@
 // Reading back the reps hlr makes for Epeck's lazy objects (points and numbers that keep how they
-// were made), and whether an interval approximation is a point of doubles.
+// were made), whether an interval approximation is a point of doubles, and the lazy numbers whose
+// exact value is a quotient of sums of products of doubles.
 #pragma once
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Handle.h>
+#include <CGAL/Mpzf.h>
+
+#include <array>
+#include <optional>
 
 namespace hlr {
 
@@ -18,6 +24,22 @@ const Rep* rep_as(const Lazy& object) {
 template <class IntervalPoint>
 bool is_double_point(const IntervalPoint& p) {
   return p.x().inf() == p.x().sup() && p.y().inf() == p.y().sup();
+}
+
+// A lazy number that keeps what it is made of (a parameter along a line, exact_parameter.hpp; a
+// view coordinate of an input point, view.hpp), so that its exact value can be had as num / den
+// in CGAL::Mpzf, without rationals, when what it is made of are doubles.
+class QuotientRep : public CGAL::Lazy_exact_nt_rep<CGAL::Epeck::FT::Exact_type> {
+ public:
+  using CGAL::Lazy_exact_nt_rep<CGAL::Epeck::FT::Exact_type>::Lazy_exact_nt_rep;
+  // (num, den), den != 0, when every number it is made of is a double; else nothing.
+  virtual std::optional<std::array<CGAL::Mpzf, 2>> quotient() const = 0;
+};
+
+// v = num / den in Mpzf, when v is a QuotientRep whose parts are doubles; else nothing.
+inline std::optional<std::array<CGAL::Mpzf, 2>> quotient_of(const CGAL::Epeck::FT& v) {
+  const QuotientRep* rep = rep_as<QuotientRep>(v);
+  return rep ? rep->quotient() : std::nullopt;
 }
 
 }  // namespace hlr

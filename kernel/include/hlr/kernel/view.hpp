@@ -103,26 +103,47 @@ namespace view_detail {
 // a constructed one (an Epeck point: a penetration line's end, which would otherwise also take a
 // lazy number per model coordinate). Built on CGAL's Lazy_exact_nt_rep, as CGAL's own constants
 // are (CGAL/Lazy_exact_nt.h).
-using ExactRows = std::array<std::array<ExactKernel::FT, 3>, 3>;
+struct ExactRows {
+  std::array<std::array<ExactKernel::FT, 3>, 3> lazy;
+  // The same rows in Mpzf (each a sum of products of the view's doubles): an input point's view
+  // coordinate is then an integer in Mpzf, for predicates that skip rationals (lazy_rep.hpp).
+  std::array<std::array<CGAL::Mpzf, 3>, 3> mpzf;
+};
 template <class ET, class Point>
 struct RowDotBlock;
 
 // Row `Row` of a point's view coordinates. The three of one point share one allocation, a
 // RowDotBlock, which holds the rows and the point once: a rep's deallocation gives its share of
 // the block back, and the last one frees it (about 100 bytes less per point than three allocations).
+// For an input point it keeps its quotient (row · p over 1, in Mpzf).
 template <class ET, class Point, int Row>
-class RowDotRep final : public CGAL::Lazy_exact_nt_rep<ET> {
-  using Base = CGAL::Lazy_exact_nt_rep<ET>;
-  using Block = RowDotBlock<ET, Point>;
+class RowDotRep final
+    : public std::conditional_t<std::is_same_v<Point, Vec3>, QuotientRep, CGAL::Lazy_exact_nt_rep<ET>> {
   static constexpr bool input = std::is_same_v<Point, Vec3>;
+  using Base = std::conditional_t<input, QuotientRep, CGAL::Lazy_exact_nt_rep<ET>>;
+  using Block = RowDotBlock<ET, Point>;
 
  public:
   // Under upward rounding (CGAL::Protect_FPU_rounding), as CGAL's unprotected intervals need.
-  RowDotRep(const ExactRows& rows, const Point& p) : Base(interval(rows[Row], p)) {}
+  RowDotRep(const ExactRows& rows, const Point& p) : Base(interval(rows.lazy[Row], p)) {}
+
+  // QuotientRep's, for an input point (a constructed one has no such quotient).
+  std::optional<std::array<CGAL::Mpzf, 2>> quotient() const {
+    if constexpr (input) {
+      const Block& block = block_of(this);
+      const auto& row = block.rows->mpzf[Row];
+      CGAL::Mpzf sum(0);
+      for (int k = 0; k < 3; ++k)
+        if (row[k].sign() != CGAL::ZERO) sum = sum + row[k] * CGAL::Mpzf(block.point[k]);
+      return std::array<CGAL::Mpzf, 2>{std::move(sum), CGAL::Mpzf(1)};
+    } else {
+      return std::nullopt;
+    }
+  }
 
   void update_exact() const override {
     const Block& block = block_of(this);
-    const auto& row = (*block.rows)[Row];
+    const auto& row = block.rows->lazy[Row];
     auto coordinate = [&](int k) {
       if constexpr (input) return ET(block.point[k]);
       else return CGAL::exact(block.point)[k];
@@ -219,7 +240,16 @@ class ViewFrame {
     for (int i = 0; i < 3; ++i) z_[i] = -d[i];
     if constexpr (std::is_same_v<FT, ExactKernel::FT>) {
       auto rows = std::make_shared<view_detail::ExactRows>();
-      for (int k = 0; k < 3; ++k) (*rows)[0][k] = x_[k], (*rows)[1][k] = y_[k], (*rows)[2][k] = z_[k];
+      for (int k = 0; k < 3; ++k) rows->lazy[0][k] = x_[k], rows->lazy[1][k] = y_[k], rows->lazy[2][k] = z_[k];
+      using Z = CGAL::Mpzf;
+      const Z dz[3] = {Z(view.direction[0]), Z(view.direction[1]), Z(view.direction[2])};
+      const Z uz[3] = {Z(view.up[0]), Z(view.up[1]), Z(view.up[2])};
+      auto cross_z = [](const Z a[3], const Z b[3]) {
+        return std::array<Z, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      };
+      rows->mpzf[0] = cross_z(dz, uz);
+      rows->mpzf[1] = cross_z(rows->mpzf[0].data(), dz);
+      for (int k = 0; k < 3; ++k) rows->mpzf[2][k] = -dz[k];
       rows_ = std::move(rows);
     }
     for (int i = 0; i < 3; ++i) {
@@ -316,6 +346,10 @@ class ViewFrame {
   // double, then divided by the axis scale (irrational in general, so this is as close as output
   // gets); never -0.
   double rounded(const FT& value, int axis) const { return Geometry<K>::to_double(value) / scale_[axis] + 0.0; }
+  // rounded(p's x or y, axis), without evaluating p exactly where it keeps how it was made.
+  double rounded(const typename Geometry<K>::Point& p, int axis) const {
+    return Geometry<K>::to_double(p, axis) / scale_[axis] + 0.0;
+  }
   // rounded(a + t (b - a), axis), without building that number.
   double rounded_between(const FT& a, const FT& b, const FT& t, int axis) const {
     return Geometry<K>::to_double_between(a, b, t) / scale_[axis] + 0.0;

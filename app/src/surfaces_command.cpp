@@ -49,8 +49,13 @@ int solve(const SurfacesOptions& options, const View& view) {
   job.progress = run.progress();
   const exporter::SurfacesSolution solution = exporter::solve_surfaces(scene, view, job, seconds_since(start));
 
+  // The pictures first, so that the JSON's write stage can count them.
+  const auto write_start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < files.size(); ++i)
-    files[i].write(formats[i] == Format::json ? solution.json(options.exact) : solution.svg());
+    if (formats[i] != Format::json) files[i].write(solution.svg());
+  const double pictures = seconds_since(write_start);
+  for (std::size_t i = 0; i < files.size(); ++i)
+    if (formats[i] == Format::json) files[i].write(solution.json(options.exact, pictures));
   files.commit();
   run.finish(scene);
   const auto& st = solution.summary().sources;

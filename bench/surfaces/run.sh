@@ -12,7 +12,8 @@
 #   bench/surfaces/results/<UTC date>.csv
 # columns: mesh, view, faces, sources, hlr_exact_s, hlr_epick_s, hlr_double_s, lineart_s,
 #          ratio_exact_lineart
-#   hlr_*_s      stats.seconds of hlr's JSON (total: read + sources + sort; minimum over
+#   hlr_*_s      stats.seconds of hlr's JSON (total: read + sources + sort + write, the JSON
+#                made; builds before 2026-12-07 leave out write; minimum over
 #                HLR_REPEAT runs), "not run" for a kernel KERNELS leaves out, or "failed" when
 #                hlr exits non-zero (expected often for epick/double on real meshes) or times out
 #   faces        stats.faces (input faces), sources = stats.sources (polygons after back-face
@@ -21,7 +22,7 @@
 #   lineart_s    the peer's lineart_seconds (Line Art's own timer, minimum of REPEAT runs), or
 #                "failed"
 #   ratio_exact_lineart = hlr_exact_s / lineart_s (> 1: hlr is slower), or "n/a"
-# It also prints hlr's stage_seconds (read / sources / sort) for the exact kernel, and keeps
+# It also prints hlr's stage_seconds (read / sources / sort / write) for the exact kernel, and keeps
 # logs of failures in the work folder.
 #
 # env:
@@ -99,7 +100,7 @@ with open(out, "w", newline="") as f:
         st = ""
         if ex:
             g = ex["stage_seconds"]
-            st = "%.3f / %.3f / %.3f" % (g["read"], g["sources"], g["sort"])
+            st = " / ".join("%.3f" % g.get(k, 0) for k in ("read", "sources", "sort", "write"))
         print("%-24s %-5s %7s %7s %10s %10s %10s %10s %8s | %s" % tuple(map(str, row + [st])))
 print("\nwrote", out)
 EOF

@@ -25,6 +25,7 @@ namespace hlr::exporter {
 namespace {
 
 using nlohmann::json;
+using detail::append_member;
 
 // The document's text on its way to the sink, handed on in blocks of about a megabyte.
 class Output {
@@ -43,18 +44,6 @@ class Output {
   static constexpr std::size_t block = std::size_t(1) << 20;
   const std::function<void(std::string_view)>& sink_;
 };
-
-// `value` as dump(1) writes it as a member of the top-level object (one level in).
-void append_member(std::string& out, std::string_view key, const json& value) {
-  out += "\n \"";
-  out += key;  // hlr's own keys: nothing to escape
-  out += "\": ";
-  const std::string text = value.dump(1);
-  for (char c : text) {  // raw newlines only come from the layout: strings escape theirs
-    out += c;
-    if (c == '\n') out += ' ';
-  }
-}
 
 // The "lines" array as dump(1) writes it one level in: each piece an object with its keys in
 // order (a, b, edge, kind, mesh, visible) at two levels in, its values at three and four.
@@ -155,6 +144,17 @@ json stats_json(const LineDrawing& drawing, double write) {
 }  // namespace
 
 namespace detail {
+
+void append_member(std::string& out, std::string_view key, const json& value) {
+  out += "\n \"";
+  out += key;  // hlr's own keys: nothing to escape
+  out += "\": ";
+  const std::string text = value.dump(1);
+  for (char c : text) {  // raw newlines only come from the layout: strings escape theirs
+    out += c;
+    if (c == '\n') out += ' ';
+  }
+}
 
 json input_json(const InputInfo& input) {
   json out = {{"files", input.files}, {"faces", input.faces}, {"vertices", input.vertices}};

@@ -4,54 +4,133 @@
 #include <hlr/export/surfaces.hpp>
 
 #include "document_json.hpp"
+#include "numbers.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <unordered_map>
 
 namespace hlr::exporter {
 namespace detail {
 
 using nlohmann::json;
 
-// View coordinates of the unnormalized frame, divided by the axis scales and rounded once.
+// View coordinates of the unnormalized frame, divided by the axis scales and rounded once. A
+// corner is in several polygons (the visible and hidden pieces around it): on the exact kernel, a
+// point that is not one of doubles is rounded once and its doubles kept by its identity.
 template <class K>
-struct Rounder {
-  const ViewFrame<K>& frame;
-  double x(const typename Geometry<K>::Point& p) const { return frame.rounded(Geometry<K>::x(p), 0); }
-  double y(const typename Geometry<K>::Point& p) const { return frame.rounded(Geometry<K>::y(p), 1); }
+class Rounder {
+ public:
+  using Point = typename Geometry<K>::Point;
+  explicit Rounder(const ViewFrame<K>& frame) : frame_(frame) {}
+  std::array<double, 2> point(const Point& p) const {
+    using G = Geometry<K>;
+    if constexpr (G::exact_constructions) {
+      const CGAL::Bbox_2 box = G::bbox(p);
+      if (box.xmin() != box.xmax() || box.ymin() != box.ymax()) {
+        const auto [at, made] = rounded_.try_emplace(G::identity(p));
+        if (made) at->second = {frame_.rounded(p, 0), frame_.rounded(p, 1)};
+        return at->second;
+      }
+    }
+    return {frame_.rounded(p, 0), frame_.rounded(p, 1)};
+  }
+  double x(const Point& p) const { return point(p)[0]; }
+  double y(const Point& p) const { return point(p)[1]; }
+
+ private:
+  const ViewFrame<K>& frame_;
+  mutable std::unordered_map<std::uintptr_t, std::array<double, 2>> rounded_;
 };
 
-template <class K>
-json contour_json(const clip::Contour<K>& c, const Rounder<K>& r) {
-  json out = json::array();
-  for (const auto& p : c.points) out.push_back({r.x(p), r.y(p)});
-  return out;
+// The text of dump(1), written without a JSON tree: `level` is the indent of the line a value
+// starts on, its elements go one level in.
+inline void new_line(std::string& out, int level) {
+  out += '\n';
+  out.append(std::size_t(level), ' ');
 }
-
-template <class K>
-json contour_exact(const clip::Contour<K>& c) {
-  using G = Geometry<K>;
-  json out = json::array();
-  for (const auto& p : c.points) out.push_back({G::exact_string(G::x(p)), G::exact_string(G::y(p))});
-  return out;
-}
-
-template <class K>
-json polygon_json(const clip::Polygon<K>& polygon, const Rounder<K>& r, bool exact) {
-  json p;
-  p["outer"] = contour_json(polygon.outer, r);
-  p["holes"] = json::array();
-  for (const auto& h : polygon.holes) p["holes"].push_back(contour_json(h, r));
-  if (exact) {
-    p["outer_exact"] = contour_exact(polygon.outer);
-    p["holes_exact"] = json::array();
-    for (const auto& h : polygon.holes) p["holes_exact"].push_back(contour_exact(h));
+template <class Element>
+void append_array(std::string& out, std::size_t n, int level, Element&& element) {
+  if (n == 0) {
+    out += "[]";
+    return;
   }
-  return p;
+  out += '[';
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i > 0) out += ',';
+    new_line(out, level + 1);
+    element(i, level + 1);
+  }
+  new_line(out, level);
+  out += ']';
+}
+// A contour's points rounded ([x, y] numbers) or, `exact`, as "p/q" strings.
+template <class K>
+void append_contour(std::string& out, const clip::Contour<K>& c, const Rounder<K>& r, bool exact, int level) {
+  using G = Geometry<K>;
+  append_array(out, c.points.size(), level, [&](std::size_t i, int at) {
+    const auto& p = c.points[i];
+    std::array<double, 2> xy{};
+    if (!exact) xy = r.point(p);
+    append_array(out, 2, at, [&](std::size_t k, int) {
+      if (exact) {
+        out += '"';
+        out += G::exact_string(k == 0 ? G::x(p) : G::y(p));  // digits, '-' and '/': nothing to escape
+        out += '"';
+      } else {
+        append_json_number(out, xy[k]);
+      }
+    });
+  });
+}
+// The "visible" or "hidden" array: each fragment an object, its keys in order.
+template <class K>
+void append_fragments(std::string& out, const std::vector<hidden_line::Fragment<K>>& fragments, const Rounder<K>& r,
+                      bool exact, bool hidden) {
+  append_array(out, fragments.size(), 1, [&](std::size_t i, int at) {
+    const auto& f = fragments[i];
+    auto key = [&](const char* name) {
+      new_line(out, at + 1);
+      out += '"';
+      out += name;
+      out += "\": ";
+    };
+    auto holes = [&](bool as_exact) {
+      append_array(out, f.polygon.holes.size(), at + 1,
+                   [&](std::size_t h, int in) { append_contour(out, f.polygon.holes[h], r, as_exact, in); });
+    };
+    out += '{';
+    key("holes");
+    holes(false);
+    if (exact) {
+      out += ',';
+      key("holes_exact");
+      holes(true);
+    }
+    if (hidden) {
+      out += ',';
+      key("occluder");
+      out += std::to_string(f.occluder);
+    }
+    out += ',';
+    key("outer");
+    append_contour(out, f.polygon.outer, r, false, at + 1);
+    if (exact) {
+      out += ',';
+      key("outer_exact");
+      append_contour(out, f.polygon.outer, r, true, at + 1);
+    }
+    out += ',';
+    key("source");
+    append_unsigned(out, f.source);
+    new_line(out, at);
+    out += '}';
+  });
 }
 
 // A source plane z = a x + b y + c of the unnormalized frame, as a unit-normal plane
@@ -69,16 +148,15 @@ std::array<double, 4> orthonormal_plane(const hidden_line::DepthPlane<K>& plane,
 
 }  // namespace detail
 
+// The document as nlohmann::json's dump(1) would write it, members in the order of their keys, made
+// member by member so that "stats" is made last (its `write` times the making of the others) and
+// put in its place.
 template <class K>
 std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
-  using detail::json;
+  using detail::json, detail::append_member;
   using G = Geometry<K>;
-  const detail::Rounder<K> r{doc.frame};
-  json out;
-  out["format"] = "hlr-surfaces/1";
-  out["input"] = detail::input_json(doc.input);
-  out["view"] = detail::view_json(view_info(doc.frame));
-  out["kernel"] = kernel_name(doc.kernel);
+  const auto begin = std::chrono::steady_clock::now();
+  const detail::Rounder<K> r(doc.frame);
 
   json sources = json::array();
   for (const auto& s : doc.sources.polygons) {
@@ -96,48 +174,51 @@ std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
       js["plane_exact"] = {G::exact_string(s.plane->a), G::exact_string(s.plane->b), "-1", G::exact_string(s.plane->c)};
     sources.push_back(std::move(js));
   }
-  out["sources"] = std::move(sources);
-
-  json visible = json::array(), hidden = json::array();
-  for (const auto& f : doc.map.visible) {
-    json p = detail::polygon_json(f.polygon, r, exact);
-    p["source"] = f.source;
-    visible.push_back(std::move(p));
-  }
-  for (const auto& f : doc.map.hidden) {
-    json p = detail::polygon_json(f.polygon, r, exact);
-    p["source"] = f.source;
-    p["occluder"] = f.occluder;
-    hidden.push_back(std::move(p));
-  }
-  out["visible"] = std::move(visible);
-  out["hidden"] = std::move(hidden);
+  std::string before = "{", after = ",";
+  append_member(before, "format", "hlr-surfaces/1");
+  before += ",\n \"hidden\": ";
+  detail::append_fragments(before, doc.map.hidden, r, exact, true);
+  before += ',';
+  append_member(before, "input", detail::input_json(doc.input));
+  before += ',';
+  append_member(before, "kernel", kernel_name(doc.kernel));
+  before += ',';
+  append_member(before, "sources", sources);
+  before += ',';
+  append_member(after, "view", detail::view_json(view_info(doc.frame)));
+  after += ",\n \"visible\": ";
+  detail::append_fragments(after, doc.map.visible, r, exact, false);
+  after += "\n}\n";
 
   const auto& ss = doc.sources.stats;
   const auto& as = doc.map.stats;
-  out["stats"] = {
-      {"seconds", doc.times.total},
-      {"stage_seconds", {{"read", doc.times.read}, {"sources", doc.times.sources}, {"sort", doc.times.sort}}},
-      {"faces", ss.faces},
-      {"welded_vertices", doc.input.welded_vertices},
-      {"back_faces_removed", ss.back_faces_removed},
-      {"edge_on_faces_removed", ss.edge_on_faces_removed},
-      {"faces_consolidated", ss.faces_consolidated},
-      {"sources", ss.sources},
-      {"closed_components", ss.closed_components},
-      {"open_components", ss.open_components},
-      {"inward_components", ss.inward_components},
-      {"clips", as.clips},
-      {"recursions", as.recursions},
-      {"penetration_splits", as.penetration_splits},
-      {"coplanar_ties", as.coplanar_ties},
-  };
-  return out.dump(1) + "\n";
+  const double write = doc.times.write + hidden_line::seconds_since(begin);
+  std::string stats;
+  append_member(stats, "stats",
+                {
+                    {"seconds", doc.times.total + write},
+                    {"stage_seconds",
+                     {{"read", doc.times.read}, {"sources", doc.times.sources}, {"sort", doc.times.sort}, {"write", write}}},
+                    {"faces", ss.faces},
+                    {"welded_vertices", doc.input.welded_vertices},
+                    {"back_faces_removed", ss.back_faces_removed},
+                    {"edge_on_faces_removed", ss.edge_on_faces_removed},
+                    {"faces_consolidated", ss.faces_consolidated},
+                    {"sources", ss.sources},
+                    {"closed_components", ss.closed_components},
+                    {"open_components", ss.open_components},
+                    {"inward_components", ss.inward_components},
+                    {"clips", as.clips},
+                    {"recursions", as.recursions},
+                    {"penetration_splits", as.penetration_splits},
+                    {"coplanar_ties", as.coplanar_ties},
+                });
+  return before + stats + after;
 }
 
 template <class K>
 std::string surfaces_svg(const SurfacesDocument<K>& doc) {
-  const detail::Rounder<K> r{doc.frame};
+  const detail::Rounder<K> r(doc.frame);
   double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
   auto grow = [&](const clip::Polygon<K>& p) {
     for (const auto& q : p.outer.points) {

@@ -587,9 +587,19 @@ TEST_F(CliSurfaces, SolvesTheBundledBracketIntoJsonAndSvg) {
   Outcome run = hlr({"surfaces", mesh, "--view", "iso", "-o", out("b.json").string(), "-o", out("b.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(run.err, "");
-  const json doc = json::parse(slurp(out("b.json")));
+  const std::string text = slurp(out("b.json"));
+  const json doc = json::parse(text);
+  EXPECT_EQ(text, doc.dump(1) + "\n") << "written member by member, as one tree dumps";
   EXPECT_EQ(doc.at("format"), "hlr-surfaces/1");
   EXPECT_EQ(doc.at("view").at("name"), "iso");
+  // The seconds are the stages' sum (each timed on its own clock), the write stage (this document
+  // and the SVG) among them.
+  const json& stages = doc.at("stats").at("stage_seconds");
+  EXPECT_GT(stages.at("write").get<double>(), 0);
+  EXPECT_NEAR(doc.at("stats").at("seconds").get<double>(),
+              stages.at("read").get<double>() + stages.at("sources").get<double>() +
+                  stages.at("sort").get<double>() + stages.at("write").get<double>(),
+              1e-3);
   EXPECT_EQ(doc.at("input").at("files").at(0), mesh);
   EXPECT_GT(doc.at("visible").size(), 0u);
   for (const auto& h : doc.at("hidden")) EXPECT_GE(h.at("occluder").get<int>(), 0);
@@ -610,6 +620,17 @@ TEST_F(CliSurfaces, EveryNamedViewAndADirectionWork) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const json doc = json::parse(slurp(out("c.json")));
   EXPECT_TRUE(is_rational_text(doc.at("visible").at(0).at("outer_exact").at(0).at(0).get<std::string>()));
+  // With holes, hidden polygons and the exact values, the bytes are still what one tree dumps.
+  const std::string part = (kBundledParts / "anchor.off").string();
+  run = hlr({"surfaces", part, "--view", "top", "--exact", "-o", out("d.json").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string text = slurp(out("d.json"));
+  const json anchor = json::parse(text);
+  EXPECT_EQ(text, anchor.dump(1) + "\n");
+  std::size_t holes = 0;
+  for (const auto& p : anchor.at("visible")) holes += p.at("holes_exact").size();
+  EXPECT_GT(holes, 0u);
+  EXPECT_GT(anchor.at("hidden").size(), 0u);
 }
 
 TEST_F(CliSurfaces, BadViewsAreUsageErrors) {

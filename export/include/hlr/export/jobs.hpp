@@ -101,7 +101,9 @@ class SurfacesSolution {
     hidden_line::AreaSortStats sort;
     std::size_t visible = 0, hidden = 0;  // polygons
   };
-  std::string json(bool exact) const;  // hlr-surfaces/1; `exact` adds the "p/q" values
+  // hlr-surfaces/1; `exact` adds the "p/q" values. Its stats count the making of the document in
+  // the write stage, and `written_before` too: the seconds this run's other outputs took.
+  std::string json(bool exact, double written_before = 0) const;
   std::string svg() const;
   const Summary& summary() const;
   const StageTimes& times() const;

@@ -54,6 +54,13 @@ inline void new_line(std::string& out, int level) {
   out += '\n';
   out.append(std::size_t(level), ' ');
 }
+// `"name": ` on a new line at `level`.
+inline void append_key(std::string& out, int level, const char* name) {
+  new_line(out, level);
+  out += '"';
+  out += name;
+  out += "\": ";
+}
 template <class Element>
 void append_array(std::string& out, std::size_t n, int level, Element&& element) {
   if (n == 0) {
@@ -94,12 +101,7 @@ void append_fragments(std::string& out, const std::vector<hidden_line::Fragment<
                       bool exact, bool hidden) {
   append_array(out, fragments.size(), 1, [&](std::size_t i, int at) {
     const auto& f = fragments[i];
-    auto key = [&](const char* name) {
-      new_line(out, at + 1);
-      out += '"';
-      out += name;
-      out += "\": ";
-    };
+    auto key = [&](const char* name) { append_key(out, at + 1, name); };
     auto holes = [&](bool as_exact) {
       append_array(out, f.polygon.holes.size(), at + 1,
                    [&](std::size_t h, int in) { append_contour(out, f.polygon.holes[h], r, as_exact, in); });
@@ -146,6 +148,44 @@ std::array<double, 4> orthonormal_plane(const hidden_line::DepthPlane<K>& plane,
 }
 
 
+// The "sources" array: each source's file faces, mesh, rounded plane and (exact) plane values.
+template <class K>
+void append_sources(std::string& out, const SurfacesDocument<K>& doc, bool exact) {
+  using G = Geometry<K>;
+  std::vector<std::uint32_t> faces;
+  append_array(out, doc.sources.polygons.size(), 1, [&](std::size_t i, int at) {
+    const auto& s = doc.sources.polygons[i];
+    const Mesh& mesh = doc.meshes[s.mesh];
+    faces.clear();  // file faces; one may have given several (scene.hpp)
+    for (std::uint32_t f : s.faces) faces.push_back(mesh.face_index.empty() ? f : mesh.face_index[f]);
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    out += '{';
+    append_key(out, at + 1, "faces");
+    append_array(out, faces.size(), at + 1, [&](std::size_t k, int) { append_unsigned(out, faces[k]); });
+    out += ',';
+    append_key(out, at + 1, "mesh");
+    append_unsigned(out, s.mesh);
+    out += ',';
+    append_key(out, at + 1, "plane");
+    const auto plane = orthonormal_plane(*s.plane, doc.frame);
+    append_array(out, 4, at + 1, [&](std::size_t k, int) { append_json_number(out, plane[k]); });
+    if (exact) {
+      out += ',';
+      append_key(out, at + 1, "plane_exact");
+      const std::string values[4] = {G::exact_string(s.plane->a), G::exact_string(s.plane->b), "-1",
+                                     G::exact_string(s.plane->c)};
+      append_array(out, 4, at + 1, [&](std::size_t k, int) {
+        out += '"';
+        out += values[k];
+        out += '"';
+      });
+    }
+    new_line(out, at);
+    out += '}';
+  });
+}
+
 }  // namespace detail
 
 // The document as nlohmann::json's dump(1) would write it, members in the order of their keys, made
@@ -153,27 +193,10 @@ std::array<double, 4> orthonormal_plane(const hidden_line::DepthPlane<K>& plane,
 // put in its place.
 template <class K>
 std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
-  using detail::json, detail::append_member;
-  using G = Geometry<K>;
+  using detail::append_member;
   const auto begin = std::chrono::steady_clock::now();
   const detail::Rounder<K> r(doc.frame);
 
-  json sources = json::array();
-  for (const auto& s : doc.sources.polygons) {
-    json js;
-    js["mesh"] = s.mesh;
-    const Mesh& mesh = doc.meshes[s.mesh];
-    std::vector<std::uint32_t> faces;  // file faces; one may have given several (scene.hpp)
-    for (std::uint32_t f : s.faces) faces.push_back(mesh.face_index.empty() ? f : mesh.face_index[f]);
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    js["faces"] = faces;
-    const auto plane = detail::orthonormal_plane(*s.plane, doc.frame);
-    js["plane"] = {plane[0], plane[1], plane[2], plane[3]};
-    if (exact)
-      js["plane_exact"] = {G::exact_string(s.plane->a), G::exact_string(s.plane->b), "-1", G::exact_string(s.plane->c)};
-    sources.push_back(std::move(js));
-  }
   std::string before = "{", after = ",";
   append_member(before, "format", "hlr-surfaces/1");
   before += ",\n \"hidden\": ";
@@ -182,8 +205,8 @@ std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
   append_member(before, "input", detail::input_json(doc.input));
   before += ',';
   append_member(before, "kernel", kernel_name(doc.kernel));
-  before += ',';
-  append_member(before, "sources", sources);
+  before += ",\n \"sources\": ";
+  detail::append_sources(before, doc, exact);
   before += ',';
   append_member(after, "view", detail::view_json(view_info(doc.frame)));
   after += ",\n \"visible\": ";

@@ -40,8 +40,6 @@ class Rounder {
     }
     return {frame_.rounded(p, 0), frame_.rounded(p, 1)};
   }
-  double x(const Point& p) const { return point(p)[0]; }
-  double y(const Point& p) const { return point(p)[1]; }
 
  private:
   const ViewFrame<K>& frame_;
@@ -53,6 +51,12 @@ class Rounder {
 inline void new_line(std::string& out, int level) {
   out += '\n';
   out.append(std::size_t(level), ' ');
+}
+// An exact value's "p/q" text as a JSON string: digits, '-' and '/', nothing to escape.
+inline void append_quoted(std::string& out, const std::string& text) {
+  out += '"';
+  out += text;
+  out += '"';
 }
 // `"name": ` on a new line at `level`.
 inline void append_key(std::string& out, int level, const char* name) {
@@ -85,13 +89,8 @@ void append_contour(std::string& out, const clip::Contour<K>& c, const Rounder<K
     std::array<double, 2> xy{};
     if (!exact) xy = r.point(p);
     append_array(out, 2, at, [&](std::size_t k, int) {
-      if (exact) {
-        out += '"';
-        out += G::exact_string(k == 0 ? G::x(p) : G::y(p));  // digits, '-' and '/': nothing to escape
-        out += '"';
-      } else {
-        append_json_number(out, xy[k]);
-      }
+      if (exact) append_quoted(out, G::exact_string(k == 0 ? G::x(p) : G::y(p)));
+      else append_json_number(out, xy[k]);
     });
   });
 }
@@ -175,11 +174,7 @@ void append_sources(std::string& out, const SurfacesDocument<K>& doc, bool exact
       append_key(out, at + 1, "plane_exact");
       const std::string values[4] = {G::exact_string(s.plane->a), G::exact_string(s.plane->b), "-1",
                                      G::exact_string(s.plane->c)};
-      append_array(out, 4, at + 1, [&](std::size_t k, int) {
-        out += '"';
-        out += values[k];
-        out += '"';
-      });
+      append_array(out, 4, at + 1, [&](std::size_t k, int) { append_quoted(out, values[k]); });
     }
     new_line(out, at);
     out += '}';
@@ -245,10 +240,11 @@ std::string surfaces_svg(const SurfacesDocument<K>& doc) {
   double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
   auto grow = [&](const clip::Polygon<K>& p) {
     for (const auto& q : p.outer.points) {
-      x0 = std::min(x0, r.x(q));
-      x1 = std::max(x1, r.x(q));
-      y0 = std::min(y0, r.y(q));
-      y1 = std::max(y1, r.y(q));
+      const auto [x, y] = r.point(q);
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x);
+      y0 = std::min(y0, y);
+      y1 = std::max(y1, y);
     }
   };
   for (const auto& f : doc.map.visible) grow(f.polygon);
@@ -264,8 +260,10 @@ std::string surfaces_svg(const SurfacesDocument<K>& doc) {
     std::ostringstream d;
     d.precision(9);
     auto contour = [&](const clip::Contour<K>& c) {
-      for (std::size_t i = 0; i < c.points.size(); ++i)
-        d << (i == 0 ? "M" : "L") << r.x(c.points[i]) << ' ' << -r.y(c.points[i]) << ' ';
+      for (std::size_t i = 0; i < c.points.size(); ++i) {
+        const auto [x, y] = r.point(c.points[i]);
+        d << (i == 0 ? "M" : "L") << x << ' ' << -y << ' ';
+      }
       d << "Z ";
     };
     contour(p.outer);

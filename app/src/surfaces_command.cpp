@@ -55,7 +55,8 @@ int solve(const SurfacesOptions& options, const View& view) {
     if (formats[i] != Format::json) files[i].write(solution.svg());
   const double pictures = seconds_since(write_start);
   for (std::size_t i = 0; i < files.size(); ++i)
-    if (formats[i] == Format::json) files[i].write(solution.json(options.exact, pictures));
+    if (formats[i] == Format::json)
+      solution.write_json(options.exact, pictures, [&](std::string_view part) { files[i].write(part); });
   files.commit();
   run.finish(scene);
   const auto& st = solution.summary().sources;

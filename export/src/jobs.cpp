@@ -250,7 +250,7 @@ RasterRun draw_raster(const Scene& scene, const View& view, const hidden_line::R
 
 struct SurfacesSolution::Impl {
   virtual ~Impl() = default;
-  virtual std::string json(bool exact, double written_before) const = 0;
+  virtual std::vector<std::string> json(bool exact, double written_before) const = 0;
   virtual std::string svg() const = 0;
   Summary summary;
   StageTimes times;
@@ -265,7 +265,7 @@ struct SurfacesImpl final : SurfacesSolution::Impl {
   SurfacesDocument<K> document() const {
     return {scene.input, scene.meshes, solution.frame, solution.sources, solution.map, kernel, times};
   }
-  std::string json(bool exact, double written_before) const override {
+  std::vector<std::string> json(bool exact, double written_before) const override {
     SurfacesDocument<K> doc = document();
     doc.times.write = written_before;
     return surfaces_json(doc, exact);
@@ -277,7 +277,19 @@ struct SurfacesImpl final : SurfacesSolution::Impl {
 
 }  // namespace
 
-std::string SurfacesSolution::json(bool exact, double written_before) const { return impl_->json(exact, written_before); }
+std::string SurfacesSolution::json(bool exact, double written_before) const {
+  const std::vector<std::string> parts = impl_->json(exact, written_before);
+  std::size_t size = 0;
+  for (const std::string& part : parts) size += part.size();
+  std::string text;
+  text.reserve(size);
+  for (const std::string& part : parts) text += part;
+  return text;
+}
+void SurfacesSolution::write_json(bool exact, double written_before,
+                                  const std::function<void(std::string_view)>& sink) const {
+  for (const std::string& part : impl_->json(exact, written_before)) sink(part);
+}
 std::string SurfacesSolution::svg() const { return impl_->svg(); }
 const SurfacesSolution::Summary& SurfacesSolution::summary() const { return impl_->summary; }
 const StageTimes& SurfacesSolution::times() const { return impl_->times; }

@@ -10,6 +10,7 @@
 //   append_json_number  what nlohmann::json's dump() prints for a double: its Grisu2 digits
 //                       (which round-trip but are not always the shortest: std::to_chars would
 //                       differ in about one number in a thousand), "null" for NaN and infinity.
+//   JsonNumbers         append_json_number with the texts of recent numbers kept.
 //   append_unsigned     a decimal integer.
 #pragma once
 
@@ -18,8 +19,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hlr::exporter::detail {
 
@@ -61,6 +64,39 @@ inline void append_json_number(std::string& out, double v) {
   const char* end = nlohmann::detail::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, std::size_t(end - buf));
 }
+
+// append_json_number for documents where numbers repeat: a polygon map writes each corner in every
+// piece around it (five times on average), and Grisu2 is most of what a number costs. The texts of
+// recent numbers are kept in a small direct-mapped table, by their bits; one table per thread.
+class JsonNumbers {
+ public:
+  void append(std::string& out, double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    Slot& slot = slots_[(bits * 0x9E3779B97F4A7C15ull) >> (64 - kSlotBits)];
+    if (slot.length == 0 || slot.bits != bits) {
+      if (!std::isfinite(v)) {
+        out += "null";
+        return;
+      }
+      char buf[64];  // as append_json_number
+      const char* end = nlohmann::detail::to_chars(buf, buf + sizeof buf, v);
+      slot.bits = bits;
+      slot.length = std::uint8_t(end - buf);
+      std::memcpy(slot.text, buf, slot.length);
+    }
+    out.append(slot.text, slot.length);
+  }
+
+ private:
+  static constexpr int kSlotBits = 12;
+  struct Slot {
+    std::uint64_t bits = 0;
+    std::uint8_t length = 0;  // 0: empty
+    char text[31];            // a double's text: "-1.7976931348623157e+308" is 24
+  };
+  std::vector<Slot> slots_ = std::vector<Slot>(std::size_t(1) << kSlotBits);
+};
 
 inline void append_unsigned(std::string& out, std::uint64_t v) {
   char buf[24];

@@ -6,7 +6,10 @@
 #include "document_json.hpp"
 #include "numbers.hpp"
 
+#include <hlr/kernel/parallel.hpp>
+
 #include <nlohmann/json.hpp>
+#include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
 #include <chrono>
@@ -45,6 +48,22 @@ class Rounder {
   const ViewFrame<K>& frame_;
   mutable std::unordered_map<std::uintptr_t, std::array<double, 2>> rounded_;
 };
+// What a thread writing polygons keeps: its corners' doubles and its numbers' texts.
+template <class K>
+struct PointWriter {
+  explicit PointWriter(const ViewFrame<K>& frame) : rounder(frame) {}
+  Rounder<K> rounder;
+  JsonNumbers numbers;
+};
+template <class K>
+using ThreadPointWriters = tbb::enumerable_thread_specific<PointWriter<K>>;
+
+// A document's text as parts in order: the large arrays are written on every thread in chunks,
+// kept as they are rather than copied into one string (tens of megabytes for a large scene).
+struct TextParts {
+  std::vector<std::string> parts{1};
+  std::string& tail() { return parts.back(); }
+};
 
 // The text of dump(1), written without a JSON tree: `level` is the indent of the line a value
 // starts on, its elements go one level in.
@@ -80,57 +99,82 @@ void append_array(std::string& out, std::size_t n, int level, Element&& element)
   new_line(out, level);
   out += ']';
 }
+// append_array for a large array, on every thread: element(text, i, level) appends element i to
+// `text`. Each chunk of elements is a part of its own, so the text is the same for any number of
+// threads.
+template <class Element>
+void append_array_in_parallel(TextParts& out, std::size_t n, int level, const Element& element) {
+  constexpr std::size_t grain = 512;
+  if (n == 0) {
+    out.tail() += "[]";
+    return;
+  }
+  std::vector<std::string> chunks((n + grain - 1) / grain);
+  aligned_chunks(n, grain, [&](std::size_t begin, std::size_t end) {
+    std::string& text = chunks[begin / grain];
+    for (std::size_t i = begin; i < end; ++i) {
+      text += i == 0 ? '[' : ',';
+      new_line(text, level + 1);
+      element(text, i, level + 1);
+    }
+  });
+  for (std::string& chunk : chunks) out.parts.push_back(std::move(chunk));
+  out.parts.emplace_back();
+  new_line(out.tail(), level);
+  out.tail() += ']';
+}
 // A contour's points rounded ([x, y] numbers) or, `exact`, as "p/q" strings.
 template <class K>
-void append_contour(std::string& out, const clip::Contour<K>& c, const Rounder<K>& r, bool exact, int level) {
+void append_contour(std::string& out, const clip::Contour<K>& c, PointWriter<K>& w, bool exact, int level) {
   using G = Geometry<K>;
   append_array(out, c.points.size(), level, [&](std::size_t i, int at) {
     const auto& p = c.points[i];
     std::array<double, 2> xy{};
-    if (!exact) xy = r.point(p);
+    if (!exact) xy = w.rounder.point(p);
     append_array(out, 2, at, [&](std::size_t k, int) {
       if (exact) append_quoted(out, G::exact_string(k == 0 ? G::x(p) : G::y(p)));
-      else append_json_number(out, xy[k]);
+      else w.numbers.append(out, xy[k]);
     });
   });
 }
 // The "visible" or "hidden" array: each fragment an object, its keys in order.
 template <class K>
-void append_fragments(std::string& out, const std::vector<hidden_line::Fragment<K>>& fragments, const Rounder<K>& r,
-                      bool exact, bool hidden) {
-  append_array(out, fragments.size(), 1, [&](std::size_t i, int at) {
+void append_fragments(TextParts& out, const std::vector<hidden_line::Fragment<K>>& fragments,
+                      ThreadPointWriters<K>& writers, bool exact, bool hidden) {
+  append_array_in_parallel(out, fragments.size(), 1, [&](std::string& text, std::size_t i, int at) {
     const auto& f = fragments[i];
-    auto key = [&](const char* name) { append_key(out, at + 1, name); };
+    PointWriter<K>& w = writers.local();
+    auto key = [&](const char* name) { append_key(text, at + 1, name); };
     auto holes = [&](bool as_exact) {
-      append_array(out, f.polygon.holes.size(), at + 1,
-                   [&](std::size_t h, int in) { append_contour(out, f.polygon.holes[h], r, as_exact, in); });
+      append_array(text, f.polygon.holes.size(), at + 1,
+                   [&](std::size_t h, int in) { append_contour(text, f.polygon.holes[h], w, as_exact, in); });
     };
-    out += '{';
+    text += '{';
     key("holes");
     holes(false);
     if (exact) {
-      out += ',';
+      text += ',';
       key("holes_exact");
       holes(true);
     }
     if (hidden) {
-      out += ',';
+      text += ',';
       key("occluder");
-      out += std::to_string(f.occluder);
+      text += std::to_string(f.occluder);
     }
-    out += ',';
+    text += ',';
     key("outer");
-    append_contour(out, f.polygon.outer, r, false, at + 1);
+    append_contour(text, f.polygon.outer, w, false, at + 1);
     if (exact) {
-      out += ',';
+      text += ',';
       key("outer_exact");
-      append_contour(out, f.polygon.outer, r, true, at + 1);
+      append_contour(text, f.polygon.outer, w, true, at + 1);
     }
-    out += ',';
+    text += ',';
     key("source");
-    append_unsigned(out, f.source);
-    new_line(out, at);
-    out += '}';
+    append_unsigned(text, f.source);
+    new_line(text, at);
+    text += '}';
   });
 }
 
@@ -149,35 +193,35 @@ std::array<double, 4> orthonormal_plane(const hidden_line::DepthPlane<K>& plane,
 
 // The "sources" array: each source's file faces, mesh, rounded plane and (exact) plane values.
 template <class K>
-void append_sources(std::string& out, const SurfacesDocument<K>& doc, bool exact) {
+void append_sources(TextParts& out, const SurfacesDocument<K>& doc, bool exact) {
   using G = Geometry<K>;
-  std::vector<std::uint32_t> faces;
-  append_array(out, doc.sources.polygons.size(), 1, [&](std::size_t i, int at) {
+  append_array_in_parallel(out, doc.sources.polygons.size(), 1, [&](std::string& text, std::size_t i, int at) {
     const auto& s = doc.sources.polygons[i];
     const Mesh& mesh = doc.meshes[s.mesh];
-    faces.clear();  // file faces; one may have given several (scene.hpp)
+    std::vector<std::uint32_t> faces;  // file faces; one may have given several (scene.hpp)
+    faces.reserve(s.faces.size());
     for (std::uint32_t f : s.faces) faces.push_back(mesh.face_index.empty() ? f : mesh.face_index[f]);
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    out += '{';
-    append_key(out, at + 1, "faces");
-    append_array(out, faces.size(), at + 1, [&](std::size_t k, int) { append_unsigned(out, faces[k]); });
-    out += ',';
-    append_key(out, at + 1, "mesh");
-    append_unsigned(out, s.mesh);
-    out += ',';
-    append_key(out, at + 1, "plane");
+    text += '{';
+    append_key(text, at + 1, "faces");
+    append_array(text, faces.size(), at + 1, [&](std::size_t k, int) { append_unsigned(text, faces[k]); });
+    text += ',';
+    append_key(text, at + 1, "mesh");
+    append_unsigned(text, s.mesh);
+    text += ',';
+    append_key(text, at + 1, "plane");
     const auto plane = orthonormal_plane(*s.plane, doc.frame);
-    append_array(out, 4, at + 1, [&](std::size_t k, int) { append_json_number(out, plane[k]); });
+    append_array(text, 4, at + 1, [&](std::size_t k, int) { append_json_number(text, plane[k]); });
     if (exact) {
-      out += ',';
-      append_key(out, at + 1, "plane_exact");
+      text += ',';
+      append_key(text, at + 1, "plane_exact");
       const std::string values[4] = {G::exact_string(s.plane->a), G::exact_string(s.plane->b), "-1",
                                      G::exact_string(s.plane->c)};
-      append_array(out, 4, at + 1, [&](std::size_t k, int) { append_quoted(out, values[k]); });
+      append_array(text, 4, at + 1, [&](std::size_t k, int) { append_quoted(text, values[k]); });
     }
-    new_line(out, at);
-    out += '}';
+    new_line(text, at);
+    text += '}';
   });
 }
 
@@ -187,31 +231,33 @@ void append_sources(std::string& out, const SurfacesDocument<K>& doc, bool exact
 // member by member so that "stats" is made last (its `write` times the making of the others) and
 // put in its place.
 template <class K>
-std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
+std::vector<std::string> surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
   using detail::append_member;
   const auto begin = std::chrono::steady_clock::now();
-  const detail::Rounder<K> r(doc.frame);
+  detail::ThreadPointWriters<K> writers([&] { return detail::PointWriter<K>(doc.frame); });
 
-  std::string before = "{", after = ",";
-  append_member(before, "format", "hlr-surfaces/1");
-  before += ",\n \"hidden\": ";
-  detail::append_fragments(before, doc.map.hidden, r, exact, true);
-  before += ',';
-  append_member(before, "input", detail::input_json(doc.input));
-  before += ',';
-  append_member(before, "kernel", kernel_name(doc.kernel));
-  before += ",\n \"sources\": ";
+  detail::TextParts before, after;
+  before.tail() = "{";
+  append_member(before.tail(), "format", "hlr-surfaces/1");
+  before.tail() += ",\n \"hidden\": ";
+  detail::append_fragments(before, doc.map.hidden, writers, exact, true);
+  before.tail() += ',';
+  append_member(before.tail(), "input", detail::input_json(doc.input));
+  before.tail() += ',';
+  append_member(before.tail(), "kernel", kernel_name(doc.kernel));
+  before.tail() += ",\n \"sources\": ";
   detail::append_sources(before, doc, exact);
-  before += ',';
-  append_member(after, "view", detail::view_json(view_info(doc.frame)));
-  after += ",\n \"visible\": ";
-  detail::append_fragments(after, doc.map.visible, r, exact, false);
-  after += "\n}\n";
+  before.tail() += ',';
+  after.tail() = ",";
+  append_member(after.tail(), "view", detail::view_json(view_info(doc.frame)));
+  after.tail() += ",\n \"visible\": ";
+  detail::append_fragments(after, doc.map.visible, writers, exact, false);
+  after.tail() += "\n}\n";
 
   const auto& ss = doc.sources.stats;
   const auto& as = doc.map.stats;
   const double write = doc.times.write + hidden_line::seconds_since(begin);
-  std::string stats;
+  std::string& stats = before.parts.emplace_back();
   append_member(stats, "stats",
                 {
                     {"seconds", doc.times.total + write},
@@ -231,7 +277,8 @@ std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact) {
                     {"penetration_splits", as.penetration_splits},
                     {"coplanar_ties", as.coplanar_ties},
                 });
-  return before + stats + after;
+  for (std::string& part : after.parts) before.parts.push_back(std::move(part));
+  return std::move(before.parts);
 }
 
 template <class K>

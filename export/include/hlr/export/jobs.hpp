@@ -104,6 +104,8 @@ class SurfacesSolution {
   // hlr-surfaces/1; `exact` adds the "p/q" values. Its stats count the making of the document in
   // the write stage, and `written_before` too: the seconds this run's other outputs took.
   std::string json(bool exact, double written_before = 0) const;
+  // The same text, handed to `sink` in parts (a large document is made in chunks on every thread).
+  void write_json(bool exact, double written_before, const std::function<void(std::string_view)>& sink) const;
   std::string svg() const;
   const Summary& summary() const;
   const StageTimes& times() const;

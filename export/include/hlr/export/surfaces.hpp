@@ -3,7 +3,8 @@
 //   surfaces_json  the hlr-surfaces/1 contract (DESIGN.md, docs/FORMATS.md): sources with their
 //                  faces and planes, visible and hidden polygons with source and occluder tags,
 //                  coordinates in the orthonormal view frame, rounded once; `exact` adds the exact
-//                  values in the unnormalized frame.
+//                  values in the unnormalized frame. Its text comes in parts, in order: the
+//                  polygon arrays are written on every thread, a chunk per part.
 //   surfaces_svg   a picture for a person: visible polygons filled in a flat shade of their
 //                  normal, hidden polygons as dashed outlines.
 //
@@ -46,12 +47,12 @@ struct SurfacesDocument {
 };
 
 template <class K>
-std::string surfaces_json(const SurfacesDocument<K>& doc, bool exact);
+std::vector<std::string> surfaces_json(const SurfacesDocument<K>& doc, bool exact);
 template <class K>
 std::string surfaces_svg(const SurfacesDocument<K>& doc);
 
-#define HLR_EXPORT_SURFACES_DECLARE(K, EXTERN)                                    \
-  EXTERN template std::string surfaces_json<K>(const SurfacesDocument<K>&, bool); \
+#define HLR_EXPORT_SURFACES_DECLARE(K, EXTERN)                                                 \
+  EXTERN template std::vector<std::string> surfaces_json<K>(const SurfacesDocument<K>&, bool); \
   EXTERN template std::string surfaces_svg<K>(const SurfacesDocument<K>&);
 
 HLR_EXPORT_SURFACES_DECLARE(ExactKernel, extern)

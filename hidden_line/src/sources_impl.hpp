@@ -9,6 +9,7 @@
 #pragma once
 
 #include <hlr/clipper/area_sign.hpp>
+#include <hlr/hidden_line/parallel.hpp>
 #include <hlr/hidden_line/visibility.hpp>
 #include <hlr/kernel/mesh_edges.hpp>
 #include <hlr/kernel/near_plane.hpp>
@@ -254,34 +255,30 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       plane.c = a.z - plane.a * a.x - plane.b * a.y;
       return plane;
     };
-    auto add_source = [&](clip::Polygon<K> polygon, std::vector<std::uint32_t> faces) {
+    // A group's sources: its faces merged, or each on its own.
+    struct GroupSources {
+      std::vector<SourcePolygon<K>> polygons;
+      std::size_t faces_consolidated = 0;
+    };
+    auto add_source = [&](GroupSources& made, clip::Polygon<K> polygon, std::vector<std::uint32_t> faces) {
       SourcePolygon<K> s;
       s.polygon = std::move(polygon);
       s.plane_points = plane_corners(faces.front());
       if (options.depth_planes) s.plane = plane_of(faces.front());
       s.mesh = mi;
       s.faces = std::move(faces);
-      out.polygons.push_back(std::move(s));
+      made.polygons.push_back(std::move(s));
     };
-
-    // Groups in order of their lowest face, so sources are ordered by (mesh, first face).
-    std::vector<std::vector<std::uint32_t>> members(nf);
-    for (std::uint32_t f = 0; f < nf; ++f)
-      if (keep[f]) members[options.consolidate ? topo.coplanar_group[f] : f].push_back(f);
-    // Most groups make one polygon: grown by doubling, the polygons would leave up to half their room
-    // unused, where the run's memory peaks.
-    out.polygons.reserve(out.polygons.size() + std::count_if(members.begin(), members.end(), [](const auto& m) { return !m.empty(); }));
-    for (std::uint32_t g = 0; g < nf; ++g) {
-      const auto& faces = members[g];
-      if (faces.empty()) continue;
+    auto group_sources = [&](const std::vector<std::uint32_t>& faces) {
+      GroupSources made;
       if (faces.size() > 1) {
         std::vector<clip::Contour<K>> contours;
         for (std::uint32_t f : faces) contours.push_back(face_contour(f));
         try {
           auto merged = clip::merge_polygons<K>(contours, out.lines);
-          out.stats.faces_consolidated += faces.size();
-          for (auto& polygon : merged) add_source(std::move(polygon), faces);
-          continue;
+          made.faces_consolidated = faces.size();
+          for (auto& polygon : merged) add_source(made, std::move(polygon), faces);
+          return made;
         } catch (const clip::ClipError&) {
           // The group's faces overlap in the view (a face and its reverse, with back faces kept;
           // or rounding on an inexact kernel): keep them apart.
@@ -295,8 +292,38 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
           if (auto defect = clip::normalize_polygon(polygon))
             throw clip::ClipError("face " + std::to_string(mesh.face_index[f]) + " of " + mesh.file +
                                   " projects to a non-simple polygon (" + *defect + ")");
-        add_source(std::move(polygon), {f});
+        add_source(made, std::move(polygon), {f});
       }
+      return made;
+    };
+
+    // Groups in order of their lowest face, so sources are ordered by (mesh, first face).
+    std::vector<std::vector<std::uint32_t>> members(nf);
+    for (std::uint32_t f = 0; f < nf; ++f)
+      if (keep[f]) members[options.consolidate ? topo.coplanar_group[f] : f].push_back(f);
+    std::vector<std::uint32_t> groups;
+    for (std::uint32_t g = 0; g < nf; ++g)
+      if (!members[g].empty()) groups.push_back(g);
+    // The groups' sources on every thread: their planes and contours are most of the lazy numbers
+    // a view makes. The lines of the near plane's cuts are made first, in group order, so that the
+    // threads only read the line table.
+    if (cut.clipped())
+      for (std::uint32_t g : groups)
+        for (std::uint32_t f : members[g])
+          if (cut.part(f) == Part::cut) face_contour(f);
+    std::vector<GroupSources> made(groups.size());
+    parallel_chunks(groups.size(), 256, [&](const auto& range) {
+      options.stop.check();
+      for (std::size_t i = range.begin(); i != range.end(); ++i) made[i] = group_sources(members[groups[i]]);
+    });
+    // Most groups make one polygon: grown by doubling, the polygons would leave up to half their room
+    // unused, where the run's memory peaks.
+    std::size_t count = 0;
+    for (const GroupSources& m : made) count += m.polygons.size();
+    out.polygons.reserve(out.polygons.size() + count);
+    for (GroupSources& m : made) {
+      out.stats.faces_consolidated += m.faces_consolidated;
+      for (auto& polygon : m.polygons) out.polygons.push_back(std::move(polygon));
     }
     out.view_points.push_back(std::move(vp));
     out.image_points.push_back(std::move(p2));

@@ -610,6 +610,27 @@ TEST_F(CliSurfaces, SolvesTheBundledBracketIntoJsonAndSvg) {
   EXPECT_EQ(entries(dir_ / "out"), (std::vector<std::string>{"b.json", "b.svg"}));
 }
 
+TEST_F(CliSurfaces, OneThreadAndTwoWriteTheSameDocumentInChunks) {
+  // A part large enough for its arrays to be written in many chunks (of 512 polygons or sources),
+  // which two threads write side by side: the same document as one tree dumps, the timings aside.
+  const fs::path mesh = fs::path(HLR_SHARED_SCENES) / "fandisk.off";
+  if (!fs::exists(mesh)) GTEST_SKIP() << "no shared scenes at " << HLR_SHARED_SCENES;
+  json docs[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string file = out("f" + std::to_string(k + 1) + ".json").string();
+    Outcome run = hlr({"surfaces", mesh.string(), "--view", "iso", "--threads", std::to_string(k + 1), "-o", file});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::string text = slurp(file);
+    docs[k] = json::parse(text);
+    EXPECT_EQ(text, docs[k].dump(1) + "\n");
+    EXPECT_GT(docs[k].at("hidden").size(), 2048u);
+    EXPECT_GT(docs[k].at("sources").size(), 2048u);
+    docs[k].at("stats").erase("seconds");
+    docs[k].at("stats").erase("stage_seconds");
+  }
+  EXPECT_EQ(docs[0], docs[1]);
+}
+
 TEST_F(CliSurfaces, EveryNamedViewAndADirectionWork) {
   const std::string mesh = (kScenes / "cube.off").string();
   for (const char* view : {"front", "back", "top", "bottom", "left", "right", "iso"}) {

@@ -255,30 +255,25 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       plane.c = a.z - plane.a * a.x - plane.b * a.y;
       return plane;
     };
-    // A group's sources: its faces merged, or each on its own.
-    struct GroupSources {
-      std::vector<SourcePolygon<K>> polygons;
-      std::size_t faces_consolidated = 0;
-    };
-    auto add_source = [&](GroupSources& made, clip::Polygon<K> polygon, std::vector<std::uint32_t> faces) {
+    auto add_source = [&](std::vector<SourcePolygon<K>>& made, clip::Polygon<K> polygon, std::vector<std::uint32_t> faces) {
       SourcePolygon<K> s;
       s.polygon = std::move(polygon);
       s.plane_points = plane_corners(faces.front());
       if (options.depth_planes) s.plane = plane_of(faces.front());
       s.mesh = mi;
       s.faces = std::move(faces);
-      made.polygons.push_back(std::move(s));
+      made.push_back(std::move(s));
     };
-    auto group_sources = [&](const std::vector<std::uint32_t>& faces) {
-      GroupSources made;
+    // A group's sources, added to `made`: its faces merged, or each on its own. Returns the faces
+    // consolidated.
+    auto add_group = [&](std::vector<SourcePolygon<K>>& made, const std::vector<std::uint32_t>& faces) -> std::size_t {
       if (faces.size() > 1) {
         std::vector<clip::Contour<K>> contours;
         for (std::uint32_t f : faces) contours.push_back(face_contour(f));
         try {
           auto merged = clip::merge_polygons<K>(contours, out.lines);
-          made.faces_consolidated = faces.size();
           for (auto& polygon : merged) add_source(made, std::move(polygon), faces);
-          return made;
+          return faces.size();
         } catch (const clip::ClipError&) {
           // The group's faces overlap in the view (a face and its reverse, with back faces kept;
           // or rounding on an inexact kernel): keep them apart.
@@ -294,7 +289,7 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
                                   " projects to a non-simple polygon (" + *defect + ")");
         add_source(made, std::move(polygon), {f});
       }
-      return made;
+      return 0;
     };
 
     // Groups in order of their lowest face, so sources are ordered by (mesh, first face).
@@ -311,19 +306,24 @@ Sources<K> build_sources(const std::vector<Mesh>& meshes, const ViewFrame<K>& fr
       for (std::uint32_t g : groups)
         for (std::uint32_t f : members[g])
           if (cut.part(f) == Part::cut) face_contour(f);
-    std::vector<GroupSources> made(groups.size());
-    parallel_chunks(groups.size(), 256, [&](const auto& range) {
+    constexpr std::size_t kGroupsPerChunk = 256;
+    std::vector<std::vector<SourcePolygon<K>>> made((groups.size() + kGroupsPerChunk - 1) / kGroupsPerChunk);
+    std::vector<std::size_t> consolidated(made.size(), 0);
+    aligned_chunks(groups.size(), kGroupsPerChunk, [&](std::size_t begin, std::size_t end) {
       options.stop.check();
-      for (std::size_t i = range.begin(); i != range.end(); ++i) made[i] = group_sources(members[groups[i]]);
+      const std::size_t chunk = begin / kGroupsPerChunk;
+      made[chunk].reserve(end - begin);  // most groups make one polygon
+      for (std::size_t i = begin; i != end; ++i) consolidated[chunk] += add_group(made[chunk], members[groups[i]]);
     });
-    // Most groups make one polygon: grown by doubling, the polygons would leave up to half their room
-    // unused, where the run's memory peaks.
+    // Grown by doubling, the polygons would leave up to half their room unused, where the run's
+    // memory peaks.
     std::size_t count = 0;
-    for (const GroupSources& m : made) count += m.polygons.size();
+    for (const auto& chunk : made) count += chunk.size();
     out.polygons.reserve(out.polygons.size() + count);
-    for (GroupSources& m : made) {
-      out.stats.faces_consolidated += m.faces_consolidated;
-      for (auto& polygon : m.polygons) out.polygons.push_back(std::move(polygon));
+    for (std::size_t k = 0; k < made.size(); ++k) {
+      out.stats.faces_consolidated += consolidated[k];
+      for (auto& polygon : made[k]) out.polygons.push_back(std::move(polygon));
+      std::vector<SourcePolygon<K>>().swap(made[k]);
     }
     out.view_points.push_back(std::move(vp));
     out.image_points.push_back(std::move(p2));

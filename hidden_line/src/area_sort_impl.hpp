@@ -13,8 +13,10 @@
 #include <hlr/hidden_line/parallel.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 namespace hlr::hidden_line {
 namespace detail {
@@ -173,15 +175,33 @@ class AreaSort {
   Relation relation(const Polygon& piece, std::uint32_t s, std::uint32_t f) const {
     const auto& ps = *polygons_[s].plane;
     const auto& pf = *polygons_[f].plane;
-    const FT da = ps.a - pf.a, db = ps.b - pf.b, dc = ps.c - pf.c;
+    // The sign at a corner is first taken from the numbers' bounds (the intervals Epeck keeps),
+    // which decide most corners without a lazy node; the difference of the planes is made only
+    // for a corner they leave open.
+    using I = CGAL::Interval_nt<>;
+    auto bounds = [](const FT& v) {
+      const auto [lo, hi] = G::interval(v);
+      return I(lo, hi);
+    };
+    const I ia = bounds(ps.a) - bounds(pf.a), ib = bounds(ps.b) - bounds(pf.b), ic = bounds(ps.c) - bounds(pf.c);
+    std::optional<std::array<FT, 3>> difference;
     bool nearer_somewhere = false, farther_somewhere = false;
     // The depth difference is linear: its extremes are at corners of the outer contour.
     for (const P& p : piece.outer.points) {
-      const int sign = G::sign_above(da, db, dc, G::x(p), G::y(p), FT(0));
+      const CGAL::Bbox_2 box = G::bbox(p);
+      const I v = ia * I(box.xmin(), box.xmax()) + ib * I(box.ymin(), box.ymax()) + ic;
+      int sign = v.inf() > 0 ? 1 : v.sup() < 0 ? -1 : 2;
+      if (sign != 2) {
+        PredicateStats::add(PredicateFamily::sign, DecidedBy::interval);
+      } else {
+        if (!difference) difference = std::array<FT, 3>{ps.a - pf.a, ps.b - pf.b, ps.c - pf.c};
+        const auto& [da, db, dc] = *difference;
+        sign = G::sign_above(da, db, dc, G::x(p), G::y(p), FT(0));
+      }
       nearer_somewhere |= sign > 0;
       farther_somewhere |= sign < 0;
+      if (nearer_somewhere && farther_somewhere) return Relation::mixed;
     }
-    if (nearer_somewhere && farther_somewhere) return Relation::mixed;
     if (nearer_somewhere) return Relation::ahead;
     if (farther_somewhere) return Relation::behind;
     return Relation::coplanar;

@@ -151,17 +151,18 @@ CoplanarGroups coplanar_groups(const Mesh& mesh, const std::vector<EdgeUse>& use
   };
   CoplanarGroups out;
   out.plane_vertices.resize(nf);
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    const auto& face = mesh.faces[f];
-    out.plane_vertices[f] = {face[0], face[1], face[2]};
-    for (std::size_t k = 2; k < face.size(); ++k) {
-      if (!CGAL::collinear(point(face[0]), point(face[1]), point(face[k]))) {
-        out.plane_vertices[f] = {face[0], face[1], face[k]};
-        break;
+  parallel_chunks(nf, 4096, [&](const auto& range) {
+    for (std::size_t f = range.begin(); f != range.end(); ++f) {
+      const auto& face = mesh.faces[f];
+      out.plane_vertices[f] = {face[0], face[1], face[2]};
+      for (std::size_t k = 2; k < face.size(); ++k) {
+        if (!CGAL::collinear(point(face[0]), point(face[1]), point(face[k]))) {
+          out.plane_vertices[f] = {face[0], face[1], face[k]};
+          break;
+        }
       }
     }
-  }
-  UnionFind groups(nf);
+  });
   auto in_plane = [&](std::uint32_t f, std::uint32_t g) {
     const auto& pv = out.plane_vertices[f];
     const IK::Point_3 a = point(pv[0]), b = point(pv[1]), c = point(pv[2]);
@@ -169,12 +170,24 @@ CoplanarGroups coplanar_groups(const Mesh& mesh, const std::vector<EdgeUse>& use
       if (v != pv[0] && v != pv[1] && v != pv[2] && !CGAL::coplanar(a, b, c, point(v))) return false;
     return true;
   };
-  for_each_edge(uses, [&](EdgeUses first, EdgeUses last) {
-    if (last - first != 2) return;
-    const EdgeUse& u = first[0];
-    const EdgeUse& w = first[1];
-    if (u.forward != w.forward && u.face != w.face && in_plane(u.face, w.face)) groups.join(u.face, w.face);
+  // Which edges of exactly two uses, one each way, join two coplanar faces: an orientation test
+  // each, on every thread, marked at the edge's first use; then joined in order.
+  const std::size_t n = uses.size();
+  std::vector<std::uint8_t> joins(n, 0);
+  parallel_chunks(n, 8192, [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const std::uint64_t key = uses[i].key;
+      const bool two_uses = (i == 0 || uses[i - 1].key != key) && i + 1 < n && uses[i + 1].key == key &&
+                            (i + 2 == n || uses[i + 2].key != key);
+      if (!two_uses) continue;
+      const EdgeUse& u = uses[i];
+      const EdgeUse& w = uses[i + 1];
+      joins[i] = u.forward != w.forward && u.face != w.face && in_plane(u.face, w.face);
+    }
   });
+  UnionFind groups(nf);
+  for (std::size_t i = 0; i < n; ++i)
+    if (joins[i]) groups.join(uses[i].face, uses[i + 1].face);
   out.group.resize(nf);
   for (std::uint32_t f = 0; f < nf; ++f) out.group[f] = groups.find(f);
   return out;

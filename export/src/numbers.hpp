@@ -10,6 +10,7 @@
 //   append_json_number  what nlohmann::json's dump() prints for a double: its Grisu2 digits
 //                       (which round-trip but are not always the shortest: std::to_chars would
 //                       differ in about one number in a thousand), "null" for NaN and infinity.
+//   json_number_text    the same digits of a finite double, in a caller's buffer.
 //   JsonNumbers         append_json_number with the texts of recent numbers kept.
 //   append_unsigned     a decimal integer.
 #pragma once
@@ -55,14 +56,14 @@ inline void append_round_trip(std::string& out, double v) {
   if (s.find('.') == std::string_view::npos) out += ".0";
 }
 
+// nlohmann's text of a finite double, in `buf` (its serializer uses a buffer of 64 too).
+inline std::string_view json_number_text(char (&buf)[64], double v) {
+  return {buf, std::size_t(nlohmann::detail::to_chars(buf, buf + sizeof buf, v) - buf)};
+}
+
 inline void append_json_number(std::string& out, double v) {
-  if (!std::isfinite(v)) {
-    out += "null";
-    return;
-  }
-  char buf[64];  // nlohmann's serializer uses a buffer of 64 too
-  const char* end = nlohmann::detail::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, std::size_t(end - buf));
+  char buf[64];
+  out += std::isfinite(v) ? json_number_text(buf, v) : std::string_view("null");
 }
 
 // append_json_number for documents where numbers repeat: a polygon map writes each corner in every
@@ -75,15 +76,12 @@ class JsonNumbers {
     std::memcpy(&bits, &v, sizeof bits);
     Slot& slot = slots_[(bits * 0x9E3779B97F4A7C15ull) >> (64 - kSlotBits)];
     if (slot.length == 0 || slot.bits != bits) {
-      if (!std::isfinite(v)) {
-        out += "null";
-        return;
-      }
-      char buf[64];  // as append_json_number
-      const char* end = nlohmann::detail::to_chars(buf, buf + sizeof buf, v);
+      if (!std::isfinite(v)) return append_json_number(out, v);
+      char buf[64];
+      const std::string_view text = json_number_text(buf, v);
       slot.bits = bits;
-      slot.length = std::uint8_t(end - buf);
-      std::memcpy(slot.text, buf, slot.length);
+      slot.length = std::uint8_t(text.size());
+      std::memcpy(slot.text, text.data(), text.size());
     }
     out.append(slot.text, slot.length);
   }

@@ -179,17 +179,13 @@ class AreaSort {
     // which decide most corners without a lazy node; the difference of the planes is made only
     // for a corner they leave open.
     using I = CGAL::Interval_nt<>;
-    auto bounds = [](const FT& v) {
-      const auto [lo, hi] = G::interval(v);
-      return I(lo, hi);
-    };
-    const I ia = bounds(ps.a) - bounds(pf.a), ib = bounds(ps.b) - bounds(pf.b), ic = bounds(ps.c) - bounds(pf.c);
+    const I ia = bounds_of<K>(ps.a) - bounds_of<K>(pf.a), ib = bounds_of<K>(ps.b) - bounds_of<K>(pf.b),
+            ic = bounds_of<K>(ps.c) - bounds_of<K>(pf.c);
     std::optional<std::array<FT, 3>> difference;
     bool nearer_somewhere = false, farther_somewhere = false;
     // The depth difference is linear: its extremes are at corners of the outer contour.
     for (const P& p : piece.outer.points) {
-      const CGAL::Bbox_2 box = G::bbox(p);
-      const I v = ia * I(box.xmin(), box.xmax()) + ib * I(box.ymin(), box.ymax()) + ic;
+      const I v = bounds_at<K>(ia, ib, ic, p);
       int sign = v.inf() > 0 ? 1 : v.sup() < 0 ? -1 : 2;
       if (sign != 2) {
         PredicateStats::add(PredicateFamily::sign, DecidedBy::interval);

@@ -12,12 +12,16 @@
 // points) and the widening leaves room for rounding, so a query never misses a box that overlaps;
 // it only filters, it decides nothing. A grid that is only queried from some point on can be
 // frozen: each level's cells packed into one array.
+//
+// bounds_of, bounds_at: a number's interval bounds, and a plane's depth over a point's bounds, in
+// interval arithmetic (sound: a sign they give is the exact sign).
 #pragma once
 
 #include <hlr/clipper/clipper.hpp>
 #include <hlr/hidden_line/parallel.hpp>
 
 #include <CGAL/Bbox_2.h>
+#include <CGAL/Interval_nt.h>
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_reduce.h>
@@ -44,6 +48,21 @@ CGAL::Bbox_2 box_of(const clip::Contour<K>& c) {
 template <class K>
 CGAL::Bbox_2 box_of(const clip::Polygon<K>& p) {
   return box_of(p.outer);
+}
+
+// A number's bounds (the interval Epeck keeps), for filters that must not build lazy nodes.
+template <class K>
+CGAL::Interval_nt<> bounds_of(const typename Geometry<K>::FT& v) {
+  const auto [lo, hi] = Geometry<K>::interval(v);
+  return CGAL::Interval_nt<>(lo, hi);
+}
+// The bounds of a x + b y + c over the bounds of p.
+template <class K>
+CGAL::Interval_nt<> bounds_at(const CGAL::Interval_nt<>& a, const CGAL::Interval_nt<>& b, const CGAL::Interval_nt<>& c,
+                              const typename Geometry<K>::Point& p) {
+  using I = CGAL::Interval_nt<>;
+  const CGAL::Bbox_2 box = Geometry<K>::bbox(p);
+  return a * I(box.xmin(), box.xmax()) + b * I(box.ymin(), box.ymax()) + c;
 }
 
 // Calls visit(x, y) once for every pair of overlapping boxes (closed boxes: touching ones

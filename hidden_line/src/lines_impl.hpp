@@ -760,17 +760,9 @@ class Classifier {
   // An upper bound of the depth z = a x + b y + c over the polygon (at its outer corners: the
   // polygon lies in their hull), in interval arithmetic on the numbers' bounds.
   static double nearest_depth(const clip::Polygon<K>& polygon, const DepthPlane<K>& plane) {
-    using I = CGAL::Interval_nt<>;
-    auto bounds = [](const FT& v) {
-      const auto [lo, hi] = G::interval(v);
-      return I(lo, hi);
-    };
-    const I pa = bounds(plane.a), pb = bounds(plane.b), pc = bounds(plane.c);
+    const auto pa = bounds_of<K>(plane.a), pb = bounds_of<K>(plane.b), pc = bounds_of<K>(plane.c);
     double z = -std::numeric_limits<double>::infinity();
-    for (const P& p : polygon.outer.points) {
-      const CGAL::Bbox_2 box = G::bbox(p);  // without a lazy node per coordinate
-      z = std::max(z, (pa * I(box.xmin(), box.xmax()) + pb * I(box.ymin(), box.ymax()) + pc).sup());
-    }
+    for (const P& p : polygon.outer.points) z = std::max(z, bounds_at<K>(pa, pb, pc, p).sup());
     return z;
   }
   // Whether closed intervals in [0, 1] cover all of it.

@@ -80,6 +80,7 @@ int solve(const DrawOptions& options, const View& view, const exporter::DrawingS
   // pages in again would cost more time than they save.
   constexpr std::size_t kFacesToReturnPages = 100000;
   if (scene.input.faces >= kFacesToReturnPages) {
+    use_small_pages();
     job.lines_stage_begins = release_free_pages;
     job.output_stage_begins = return_freed_pages;
     job.drawing_rounded = keep_freed_pages;

@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   using namespace hlr::app;
   install_signal_handlers();
   keep_freed_pages();
-  prefault_large_allocations();
+  use_huge_pages();
 
   CLI::App app{"hlr: an exact hidden-line engine for CAD drawings.", "hlr"};
   app.set_version_flag("--version", "hlr " HLR_VERSION);

@@ -3,6 +3,12 @@
 #ifdef HLR_TCMALLOC
 #include <gperftools/malloc_extension.h>
 #include <sys/mman.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <mutex>
 #endif
 
 namespace hlr::app {
@@ -14,31 +20,77 @@ namespace {
 #define MADV_POPULATE_WRITE 23  // Linux 5.14; older kernels refuse it, and pages fault in as before
 #endif
 
-// The system allocator tcmalloc found, with large allocations faulted in at once.
-class PrefaultingAllocator : public SysAllocator {
+// tcmalloc's page heap grows by the program break, as tcmalloc's own allocator grows it, but in
+// steps that end on 2 MB boundaries and marked MADV_HUGEPAGE (transparent huge pages in "madvise"
+// mode, Debian's default), as glibc's malloc does with its hugetlb tunable: the kernel may then
+// back each 2 MB of new heap with one page. The first write to a fresh 4 KB page costs a fault,
+// about 10 us on the benchmark machine (a virtual machine); a 2 MB page costs one fault and its
+// clearing, about 0.3 us per 4 KB (docs/BENCHMARKS.md, "Thirty-second run"). Where the kernel has
+// no 2 MB page to give, pages fault in 4 KB at a time as before. The heap stays where tcmalloc's
+// page map already covers it: memory far from it (a fresh mmap) costs a new 2 MB leaf of that map.
+class HugePageAllocator : public SysAllocator {
  public:
-  explicit PrefaultingAllocator(SysAllocator* base) : base_(base) {}
+  explicit HugePageAllocator(SysAllocator* fallback) : fallback_(fallback) {}
+  void mark_growth(bool huge) { huge_ = huge; }
   void* Alloc(size_t size, size_t* actual_size, size_t alignment) override {
-    void* memory = base_->Alloc(size, actual_size, alignment);
-    const size_t got = actual_size ? *actual_size : size;
-    if (memory && got >= kLeast) (void)madvise(memory, got, MADV_POPULATE_WRITE);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    alignment = std::max(alignment, kSmallPage);
+    uintptr_t start = align_up(next_, alignment);
+    if (next_ == 0 || start + size > end_) {
+      if (!grow(size + alignment)) return fallback_->Alloc(size, actual_size, alignment);
+      start = align_up(next_, alignment);
+    }
+    next_ = start + size;
+    if (actual_size) *actual_size = size;
+    void* memory = reinterpret_cast<void*>(start);
+    // Large arrays are written whole: their pages are faulted in by one call, not one at a time.
+    if (size >= kHugePage) (void)madvise(memory, size, MADV_POPULATE_WRITE);
     return memory;
   }
 
  private:
-  // Smaller growth is what small runs make, which touch a few of its pages.
-  static constexpr size_t kLeast = size_t(2) << 20;
-  SysAllocator* base_;
+  static constexpr size_t kSmallPage = 4096, kHugePage = size_t(2) << 20;
+  static uintptr_t align_up(uintptr_t v, size_t a) { return (v + a - 1) / a * a; }
+
+  // Moves the break to the first 2 MB boundary at least `least` bytes on; what is left before it
+  // is not lost when someone else moved the break in between, only unused.
+  bool grow(size_t least) {
+    void* current = sbrk(0);
+    if (current == reinterpret_cast<void*>(-1)) return false;
+    const uintptr_t from = align_up(reinterpret_cast<uintptr_t>(current), kSmallPage);
+    if (from != end_) next_ = from;
+    const uintptr_t to = align_up(next_ + least, kHugePage);
+    if (sbrk(static_cast<intptr_t>(to - reinterpret_cast<uintptr_t>(current))) == reinterpret_cast<void*>(-1))
+      return false;
+    if (huge_) (void)madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
+    end_ = to;
+    return true;
+  }
+
+  SysAllocator* fallback_;
+  std::mutex mutex_;
+  uintptr_t next_ = 0, end_ = 0;
+  std::atomic<bool> huge_{true};  // whether growth from here is marked for 2 MB pages
 };
+
+// Never freed: tcmalloc may grow its heap until the process ends.
+HugePageAllocator* huge_page_allocator = nullptr;
 
 }  // namespace
 #endif
 
-void prefault_large_allocations() {
+void use_huge_pages() {
 #ifdef HLR_TCMALLOC
-  // Never freed: tcmalloc may grow its heap until the process ends.
-  static auto* prefaulting = new PrefaultingAllocator(MallocExtension::instance()->GetSystemAllocator());
-  MallocExtension::instance()->SetSystemAllocator(prefaulting);
+  if (!huge_page_allocator)
+    huge_page_allocator = new HugePageAllocator(MallocExtension::instance()->GetSystemAllocator());
+  huge_page_allocator->mark_growth(true);
+  MallocExtension::instance()->SetSystemAllocator(huge_page_allocator);
+#endif
+}
+
+void use_small_pages() {
+#ifdef HLR_TCMALLOC
+  if (huge_page_allocator) huge_page_allocator->mark_growth(false);
 #endif
 }
 

@@ -7,6 +7,7 @@
 #include "errors.hpp"
 #include "interrupt.hpp"
 #include "program_allocator.hpp"
+#include "program_code.hpp"
 #include "subcommand.hpp"
 
 #include <hlr/kernel/kernel.hpp>
@@ -74,6 +75,7 @@ int report_stop() {
 
 int main(int argc, char** argv) {
   using namespace hlr::app;
+  map_program_code();
   install_signal_handlers();
   keep_freed_pages();
   use_huge_pages();

@@ -21,9 +21,9 @@ namespace {
 #endif
 
 // tcmalloc's page heap grows by the program break, as tcmalloc's own allocator grows it, but in
-// steps that end on 2 MB boundaries and marked MADV_HUGEPAGE (transparent huge pages in "madvise"
-// mode, Debian's default), as glibc's malloc does with its hugetlb tunable: the kernel may then
-// back each 2 MB of new heap with one page. The first write to a fresh 4 KB page costs a fault,
+// steps that end on 2 MB boundaries and marked MADV_HUGEPAGE, as glibc's malloc does with its
+// hugetlb tunable: the kernel may then back each 2 MB of new heap with one page (transparent huge
+// pages, in their "madvise" and "always" modes). The first write to a fresh 4 KB page costs a fault,
 // about 10 us on the benchmark machine (a virtual machine); a 2 MB page costs one fault and its
 // clearing, about 0.3 us per 4 KB (docs/BENCHMARKS.md, "Thirty-second run"). Where the kernel has
 // no 2 MB page to give, pages fault in 4 KB at a time as before. The heap stays where tcmalloc's

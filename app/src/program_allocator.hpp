@@ -5,16 +5,16 @@
 namespace hlr::app {
 
 // From here (the run's start): the memory tcmalloc takes from the system is what the kernel may
-// back with 2 MB pages, faulted in one such page at a time rather than 4 KB at a time; a fault
-// costs about 10 us on the benchmark machine (a virtual machine), and a fresh run of a small part
-// spent a third of its time in them. Growth of 2 MB or more is faulted in by one madvise call
-// (MADV_POPULATE_WRITE): the large arrays of a large scene (1M faces on 2 threads: 12.9 s against
-// 12.0 s with 4 KB pages, docs/BENCHMARKS.md "Twenty-first run").
+// back with 2 MB pages, faulted in one such page at a time rather than 4 KB at a time. A fault
+// costs about 10 us on the benchmark machine (a virtual machine): a fresh run of fandisk spent
+// about 40% of its time in them (docs/BENCHMARKS.md, "Thirty-second run"). Growth of 2 MB or more
+// is faulted in by one madvise call (MADV_POPULATE_WRITE): the large arrays of a large scene (1M
+// faces on 2 threads: 12.9 s against 12.0 s, "Twenty-first run").
 void use_huge_pages();
 
 // From here: the heap grows in 4 KB pages. For a large drawing, whose peak memory counts (1M
-// faces: 2 MB pages half filled by the stages that follow the reading added up to 2%), while its
-// large arrays are faulted in at once anyway.
+// faces: 2 MB pages half filled by the stages after the reading added 2% to it) and whose large
+// arrays are faulted in at once anyway.
 void use_small_pages();
 
 // From here (the run's start, or after return_freed_pages): freed pages are kept for the next stage

@@ -744,6 +744,21 @@ TEST_F(CliDraw, OneThreadAndTwoDrawTheSameBytes) {
   EXPECT_GE(files, 40u);
 }
 
+TEST_F(CliDraw, ALargeDrawingTakesItsMemoryPathAndIsTheSameOnOneThreadAndTwo) {
+  // 106,722 faces: past the 100,000 from which draw_command.cpp grows the heap in 4 KB pages,
+  // hands freed pages back and frees the solution once drawn (program_allocator.hpp).
+  const fs::path grid = write_bumpy_grid(out("grid.off"), 232);
+  for (const char* threads : {"1", "2"}) {
+    Outcome run = hlr({"draw", grid.string(), "--view", "iso", "--threads", threads, "-o",
+                       out(std::string("g") + threads + ".svg").string(), "-o", out(std::string("g") + threads + ".json").string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  EXPECT_EQ(slurp(out("g1.svg")), slurp(out("g2.svg")));
+  const json doc = json::parse(slurp(out("g1.json")));
+  EXPECT_EQ(doc.at("input").at("faces").get<std::size_t>(), 106722u);
+  EXPECT_EQ(without_times(doc), without_times(json::parse(slurp(out("g2.json")))));
+}
+
 TEST_F(CliDraw, OneThreadAndTwoDrawTheSameBytesInStrips) {
   // A scene large enough for the area sort to cut the image into strips (AreaSortOptions), which
   // two threads sort side by side.

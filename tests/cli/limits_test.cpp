@@ -36,26 +36,9 @@ class CliLimits : public ::testing::Test {
     fs::remove_all(dir_, ec);
   }
 
-  // A bumpy grid of n x n vertices, 2 (n - 1)^2 triangles: no two of them coplanar, so that the
-  // area sort and the line classification have real work (at n = 300, `hlr draw` about 1 s on
-  // this project's 2-core machine; with --sun, which sorts and casts shadows, some 30 s).
-  fs::path bumpy_grid(int n) const {
-    const fs::path path = dir_ / "grid.off";
-    std::ofstream off(path);
-    off << "OFF\n" << n * n << ' ' << 2 * (n - 1) * (n - 1) << " 0\n";
-    std::uint64_t state = 12345;
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        off << x << ' ' << y << ' ' << static_cast<double>(state >> 40) / double(1 << 24) << '\n';
-      }
-    for (int y = 0; y + 1 < n; ++y)
-      for (int x = 0; x + 1 < n; ++x) {
-        const int v = y * n + x;
-        off << "3 " << v << ' ' << v + 1 << ' ' << v + n + 1 << "\n3 " << v << ' ' << v + n + 1 << ' ' << v + n << '\n';
-      }
-    return path;
-  }
+  // A bumpy grid (cli_support.hpp) of n x n vertices; with --sun, which sorts and casts shadows,
+  // n = 300 takes some 30 s.
+  fs::path bumpy_grid(int n) const { return write_bumpy_grid(dir_ / "grid.off", n); }
 
   Started start(std::vector<std::string> args) const {
     args.insert(args.begin(), HLR_BINARY);

@@ -24,11 +24,12 @@ namespace {
 // tcmalloc's page heap grows by the program break, as tcmalloc's own allocator grows it, but in
 // steps that end on 2 MB boundaries and marked MADV_HUGEPAGE, as glibc's malloc does with its
 // hugetlb tunable: the kernel may then back each 2 MB of new heap with one page (transparent huge
-// pages, in their "madvise" and "always" modes). The first write to a fresh 4 KB page costs a fault,
-// about 10 us on the benchmark machine (a virtual machine); a 2 MB page costs one fault and its
-// clearing, about 0.3 us per 4 KB (docs/BENCHMARKS.md, "Thirty-second run"). Where the kernel has
-// no 2 MB page to give, pages fault in 4 KB at a time as before. The heap stays where tcmalloc's
-// page map already covers it: memory far from it (a fresh mmap) costs a new 2 MB leaf of that map.
+// pages, in their "madvise" and "always" modes). The first write to a fresh 4 KB page costs a
+// fault, about 10 us on the benchmark machine (a virtual machine); a 2 MB page costs one fault and
+// its clearing, about 0.3 us per 4 KB (docs/BENCHMARKS.md, "Thirty-second run"). Where the kernel
+// has no 2 MB page to give, pages fault in 4 KB at a time as before. The heap stays where
+// tcmalloc's page map already covers it: memory far from it (a fresh mmap) costs a new 2 MB leaf
+// of that map.
 class HugePageAllocator : public SysAllocator {
  public:
   explicit HugePageAllocator(SysAllocator* fallback) : fallback_(fallback) {}

@@ -21,6 +21,8 @@ namespace {
 #define MADV_POPULATE_WRITE 23  // Linux 5.14; older kernels refuse it, and pages fault in as before
 #endif
 
+constexpr size_t kSmallPage = 4096, kHugePage = size_t(2) << 20;
+
 // tcmalloc's page heap grows by the program break, as tcmalloc's own allocator grows it, but in
 // steps that end on 2 MB boundaries and marked MADV_HUGEPAGE, as glibc's malloc does with its
 // hugetlb tunable: the kernel may then back each 2 MB of new heap with one page (transparent huge
@@ -38,7 +40,7 @@ class HugePageAllocator : public SysAllocator {
     const std::lock_guard<std::mutex> lock(mutex_);
     alignment = std::max(alignment, kSmallPage);
     uintptr_t start = align_up(next_, alignment);
-    if (next_ == 0 || start + size > end_) {
+    if (start + size > end_) {  // always at the first call, where end_ is 0
       if (!grow(size + alignment)) return fallback_->Alloc(size, actual_size, alignment);
       start = align_up(next_, alignment);
     }
@@ -51,7 +53,6 @@ class HugePageAllocator : public SysAllocator {
   }
 
  private:
-  static constexpr size_t kSmallPage = 4096, kHugePage = size_t(2) << 20;
   static uintptr_t align_up(uintptr_t v, size_t a) { return (v + a - 1) / a * a; }
 
   // Moves the break to the first 2 MB boundary at least `least` bytes on. Growth that does not
@@ -90,7 +91,7 @@ void set_aside_free_pages() {
   // Below 2 MB, so that it is never faulted in at once (HugePageAllocator::Alloc) where the free
   // pages are in more than one piece and it comes from fresh growth instead.
   if (MallocExtension::instance()->GetNumericProperty("tcmalloc.pageheap_free_bytes", &free_bytes) &&
-      free_bytes > 0 && free_bytes < (size_t(2) << 20))
+      free_bytes > 0 && free_bytes < kHugePage)
     set_aside = std::malloc(free_bytes);
 }
 
@@ -99,11 +100,10 @@ void set_aside_free_pages() {
 
 void use_huge_pages() {
 #ifdef HLR_TCMALLOC
-  const bool first = !huge_page_allocator;
-  if (first) huge_page_allocator = new HugePageAllocator(MallocExtension::instance()->GetSystemAllocator());
-  huge_page_allocator->mark_growth(true);
+  if (huge_page_allocator) return;  // once, at the start
+  huge_page_allocator = new HugePageAllocator(MallocExtension::instance()->GetSystemAllocator());
   MallocExtension::instance()->SetSystemAllocator(huge_page_allocator);
-  if (first) set_aside_free_pages();
+  set_aside_free_pages();
 #endif
 }
 
